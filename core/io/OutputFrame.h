@@ -1,0 +1,45 @@
+#pragma once
+// What a component hands to the writer at an output time: particle sets and
+// grid fields, each a labelled array of scalars (1), vectors (3) or tensors
+// (9, row-major xx,xy,xz,yx,...,zz), with Vaango's label names (p.x, p.stress,
+// g.mass, press_CC, ...). The writer knows nothing of MPM or ICE.
+#include <string>
+#include <vector>
+
+#include "core/grid/Grid.h"
+
+namespace tephra {
+
+struct FieldArray {
+  std::string label;           // Vaango name, e.g. "p.stress", "press_CC"
+  int material = 0;            // material index as in the deck
+  int components = 1;          // 1, 3 or 9
+  std::vector<double> values;  // size = count * components
+};
+
+// One material's particles: positions, ids and any saved fields.
+struct ParticleBlock {
+  int material = 0;
+  std::vector<Vec3> position;        // p.x (always written)
+  std::vector<long long> id;         // p.particleID (always written)
+  std::vector<FieldArray> fields;    // one entry per particle per field
+};
+
+enum class GridLocation { Cell, Node };
+
+// A field on the whole interior (+ extra cells for Cell) of the grid, stored
+// with i fastest: index = i + ni*(j + nj*k) over the written extent.
+struct GridFieldArray {
+  FieldArray data;
+  GridLocation location = GridLocation::Cell;
+};
+
+struct OutputFrame {
+  int step = 0;
+  double time = 0.0;
+  const Grid* grid = nullptr;
+  std::vector<ParticleBlock> particles;
+  std::vector<GridFieldArray> grid_fields;
+};
+
+}  // namespace tephra

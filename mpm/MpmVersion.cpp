@@ -1,0 +1,3 @@
+namespace tephra::mpm {
+int mpm_version() { return 0; }
+}  // namespace tephra::mpm
