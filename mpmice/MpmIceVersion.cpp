@@ -1,3 +1,0 @@
-namespace tephra::mpmice {
-int mpmice_version() { return 0; }
-}  // namespace tephra::mpmice
