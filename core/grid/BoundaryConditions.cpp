@@ -181,8 +181,9 @@ BoundaryConditions parse_boundary_conditions(const DeckNode& grid_section) {
   if (grid_section.children_named("BoundaryConditions").size() > 1)
     grid_section.children_named("BoundaryConditions")[1]->fail("more than one <BoundaryConditions> block");
 
-  // One entry per (face, region, material, label): a second one is a typo.
-  std::set<std::tuple<int, int, double, double, double, int, std::string>> seen;
+  // One whole-face entry per (face, material, label): a second one is a typo
+  // (regions such as circles may overlap the face's own condition).
+  std::set<std::tuple<int, int, std::string>> seen;
   for (const DeckNode& child : block->children) {
     if (child.name == "LODI") {
       LodiParameters p;
@@ -219,9 +220,8 @@ BoundaryConditions parse_boundary_conditions(const DeckNode& grid_section) {
         if (bc.label.empty()) bcnode.fail("label must not be empty");
         read_value(bcnode, bc);
         bc.where = bcnode.location();
-        const auto key = std::make_tuple(static_cast<int>(face), static_cast<int>(region.kind), region.origin[0],
-                                         region.origin[1], region.lower[0], bc.material, bc.label);
-        if (!seen.insert(key).second)
+        const auto key = std::make_tuple(static_cast<int>(face), bc.material, bc.label);
+        if (region.kind == FaceRegion::Side && !seen.insert(key).second)
           bcnode.fail("a second condition for label " + bc.label + " on face " + face_name(face) +
                       " and the same material id");
         out.list.push_back(bc);
