@@ -1,0 +1,114 @@
+// LocalHaloExchange: ghost filling and node accumulation among the patches
+// held in one process. See HaloExchange.h for the rules.
+#include "core/grid/HaloExchange.h"
+
+#include <algorithm>
+#include <stdexcept>
+#include <vector>
+
+#include "core/grid/Loop.h"
+
+namespace tephra {
+
+namespace {
+
+int wrap(int c, int n) {
+  const int m = c % n;
+  return m < 0 ? m + n : m;
+}
+
+// The level index that a stored index stands for: wrapped in periodic
+// directions; false when it lies beyond the extra cells (or extra nodes) of a
+// non-periodic face. `nodes` adds the one extra node per direction.
+bool owner_index(const Grid& g, const IntVec3& c, bool nodes, IntVec3& out) {
+  for (int d = 0; d < 3; ++d) {
+    if (g.periodic[d]) {
+      out[d] = wrap(c[d], g.cells[d]);
+    } else {
+      const int lo = -g.extra_cells[d], hi = g.cells[d] + g.extra_cells[d] + (nodes ? 1 : 0);
+      if (c[d] < lo || c[d] >= hi) return false;
+      out[d] = c[d];
+    }
+  }
+  return true;
+}
+
+// The patch holding level index s (cells: the patch whose cells_with_extra()
+// contains s; nodes: one of the patches whose node range contains s). Extra
+// cells belong to the patch of the nearest interior cell, so clamping s into
+// the interior finds the owner.
+int owner_patch(const Grid& g, const IntVec3& s) {
+  IntVec3 c;
+  for (int d = 0; d < 3; ++d) c[d] = std::min(std::max(s[d], 0), g.cells[d] - 1);
+  return g.patch_owning_cell(c);
+}
+
+template <class FieldT>
+void check_layout(const Grid& g, const PatchFields<FieldT>& pf) {
+  if (pf.size() != g.patches.size())
+    throw std::logic_error("halo exchange: the fields do not hold one field per patch of this grid");
+}
+
+template <class FieldT>
+void exchange_impl(const Grid& g, PatchFields<FieldT>& pf, bool nodes) {
+  check_layout(g, pf);
+  for (size_t n = 0; n < pf.size(); ++n) {
+    FieldT& f = pf[n];
+    const IndexRange own = f.with_extra();
+    // Each thread writes ghosts of f only and reads entries that patches own,
+    // which no thread writes: no races.
+    for_each_cell(f.with_ghosts(), [&](int i, int j, int k) {
+      const IntVec3 c(i, j, k);
+      if (own.contains(c)) return;
+      IntVec3 s;
+      if (!owner_index(g, c, nodes, s)) return;
+      const int q = owner_patch(g, s);
+      f(c) = pf[size_t(q)](s);
+    });
+  }
+}
+
+inline double zero_of(double) { return 0.0; }
+inline Vec3 zero_of(const Vec3&) { return Vec3::Zero(); }
+
+template <class T>
+void accumulate_impl(const Grid& g, PatchFields<NodeField<T>>& pf) {
+  check_layout(g, pf);
+  // One slot per physical node of the level: periodic directions have
+  // `cells` distinct nodes, others cells + 1 plus the extra nodes.
+  IntVec3 n, off;
+  for (int d = 0; d < 3; ++d) {
+    n[d] = g.periodic[d] ? g.cells[d] : g.cells[d] + 2 * g.extra_cells[d] + 1;
+    off[d] = g.periodic[d] ? 0 : g.extra_cells[d];
+  }
+  auto slot = [&](const IntVec3& s) {
+    return (size_t(s[2] + off[2]) * n[1] + size_t(s[1] + off[1])) * n[0] + size_t(s[0] + off[0]);
+  };
+  std::vector<T> sum(size_t(n[0]) * n[1] * n[2], zero_of(T()));
+  // Gather in patch order (serial: patches share slots), then scatter back.
+  for (size_t p = 0; p < pf.size(); ++p) {
+    NodeField<T>& f = pf[p];
+    for_each_cell_serial(f.with_ghosts(), [&](int i, int j, int k) {
+      IntVec3 s;
+      if (owner_index(g, IntVec3(i, j, k), true, s)) sum[slot(s)] += f(i, j, k);
+    });
+  }
+  for (size_t p = 0; p < pf.size(); ++p) {
+    NodeField<T>& f = pf[p];
+    for_each_cell(f.with_ghosts(), [&](int i, int j, int k) {
+      IntVec3 s;
+      if (owner_index(g, IntVec3(i, j, k), true, s)) f(i, j, k) = sum[slot(s)];
+    });
+  }
+}
+
+}  // namespace
+
+void LocalHaloExchange::exchange(PatchFields<CellField<double>>& f) { exchange_impl(*grid_, f, false); }
+void LocalHaloExchange::exchange(PatchFields<CellField<Vec3>>& f) { exchange_impl(*grid_, f, false); }
+void LocalHaloExchange::exchange(PatchFields<NodeField<double>>& f) { exchange_impl(*grid_, f, true); }
+void LocalHaloExchange::exchange(PatchFields<NodeField<Vec3>>& f) { exchange_impl(*grid_, f, true); }
+void LocalHaloExchange::accumulate(PatchFields<NodeField<double>>& f) { accumulate_impl(*grid_, f); }
+void LocalHaloExchange::accumulate(PatchFields<NodeField<Vec3>>& f) { accumulate_impl(*grid_, f); }
+
+}  // namespace tephra
