@@ -217,15 +217,40 @@ class Converter:
         return self.notes + self.lines
 
 
+def extensions(spec_dir, path):
+    """The extensions file, with each directive line
+         %include FILE SECTION PARENT_PATH
+    replaced by the lines of FILE's SECTION emitted under PARENT_PATH (for
+    parts of Vaango's spec files that ups_spec.xml does not include)."""
+    out = []
+    conv = Converter(spec_dir)
+    conv.collect_common(conv.load("ups_spec.xml"))
+    with open(path, encoding="utf-8") as f:
+        for line in f:
+            if not line.startswith("%include"):
+                out.append(line.rstrip("\n"))
+                continue
+            _, href, section, parent = line.split()
+            node = conv.load(href)
+            for part in section.split("/"):
+                node = node.find(part) if node is not None else None
+            if node is None:
+                fail("extension: section %s not found in %s" % (section, href))
+            conv.lines = []
+            out.append("# from %s section %s:" % (href, section))
+            conv.emit(node, parent + "/" + node.tag)
+            out.extend(conv.lines)
+    return "\n".join(out) + "\n"
+
+
 def main():
     if len(sys.argv) not in (3, 4):
         fail("usage: convert_ups_spec.py SPEC_DIR OUTPUT [EXTENSIONS]")
     lines = Converter(sys.argv[1]).run()
     text = HEADER + "\n".join(lines) + "\n"
     if len(sys.argv) == 4:
-        with open(sys.argv[3], encoding="utf-8") as f:
-            text += "# ==== EXTENSIONS (hand-written, from %s)\n" % os.path.basename(sys.argv[3])
-            text += f.read()
+        text += "# ==== EXTENSIONS (hand-written, from %s)\n" % os.path.basename(sys.argv[3])
+        text += extensions(sys.argv[1], sys.argv[3])
     with open(sys.argv[2], "w", encoding="utf-8") as f:
         f.write(text)
 
