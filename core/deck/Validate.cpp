@@ -10,23 +10,21 @@
 namespace tephra {
 
 size_t edit_distance(const std::string& a, const std::string& b) {
-  // Wagner–Fischer dynamic programme, one row at a time; letter case counts
-  // half so that "Max_timesteps" is nearer "max_timesteps" than "maxTime".
-  std::vector<double> prev(b.size() + 1), cur(b.size() + 1);
-  for (size_t j = 0; j <= b.size(); ++j) prev[j] = static_cast<double>(j);
-  for (size_t i = 1; i <= a.size(); ++i) {
-    cur[0] = static_cast<double>(i);
-    for (size_t j = 1; j <= b.size(); ++j) {
-      double sub = a[i - 1] == b[j - 1] ? 0.0
-                   : std::tolower(static_cast<unsigned char>(a[i - 1])) ==
-                             std::tolower(static_cast<unsigned char>(b[j - 1]))
-                       ? 0.5
-                       : 1.0;
-      cur[j] = std::min({prev[j] + 1, cur[j - 1] + 1, prev[j - 1] + sub});
+  // Optimal string alignment distance (Levenshtein plus adjacent
+  // transposition, the commonest typo), by the Wagner–Fischer dynamic
+  // programme over the full table d[i][j] = distance(a[0..i), b[0..j)).
+  const size_t n = a.size(), m = b.size();
+  std::vector<std::vector<size_t>> d(n + 1, std::vector<size_t>(m + 1));
+  for (size_t i = 0; i <= n; ++i) d[i][0] = i;
+  for (size_t j = 0; j <= m; ++j) d[0][j] = j;
+  for (size_t i = 1; i <= n; ++i)
+    for (size_t j = 1; j <= m; ++j) {
+      size_t cost = a[i - 1] == b[j - 1] ? 0 : 1;
+      d[i][j] = std::min({d[i - 1][j] + 1, d[i][j - 1] + 1, d[i - 1][j - 1] + cost});
+      if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1])
+        d[i][j] = std::min(d[i][j], d[i - 2][j - 2] + 1);
     }
-    std::swap(prev, cur);
-  }
-  return static_cast<size_t>(prev[b.size()] + 0.5);
+  return d[n][m];
 }
 
 std::string nearest_name(const std::string& name, const std::vector<std::string>& candidates) {
