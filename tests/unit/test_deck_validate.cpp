@@ -381,3 +381,17 @@ TEST(DeckSchema, BuiltinSchemaParses) {
   ASSERT_NE(s.common("geom_object"), nullptr);
   EXPECT_EQ(s.root().children.count("Time"), 1u);
 }
+
+TEST(DeckValidate, Latin1DeclaredDeckLoads) {
+  // Vaango's files declare encoding='ISO-8859-1'; a byte such as 0xE9 ('é' in
+  // Latin-1) is then a valid character, not broken UTF-8.
+  std::string xml = edited("<?xml version=\"1.0\"?>",
+                           "<?xml version='1.0' encoding='ISO-8859-1'?>\n<!-- caf\xe9 -->");
+  xml = xml.replace(xml.find("<Grid>"), 6, "<Meta><title>caf\xe9</title></Meta>\n<Grid>");
+  auto deck = load_deck_from_string(xml, "latin1.ups", ".");
+  EXPECT_NO_THROW(validate_deck(*deck));
+  // converted to UTF-8 inside Tephra: 0xE9 -> C3 A9
+  EXPECT_EQ(deck->root.child("Meta")->get_string("title"), "caf\xc3\xa9");
+  // <Meta> sits where <Grid> was (line 15), one line down for the comment
+  EXPECT_EQ(deck->root.child("Meta")->line, 16);
+}
