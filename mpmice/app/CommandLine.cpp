@@ -1,7 +1,5 @@
 #include "mpmice/app/CommandLine.h"
 
-#include <omp.h>
-
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -15,6 +13,7 @@
 #include "core/base/PhaseTimers.h"
 #include "core/deck/DeckLoader.h"
 #include "core/deck/Validate.h"
+#include "core/grid/Loop.h"
 #include "core/io/Extract.h"
 #include "core/sim/RunParameters.h"
 #include "core/sim/TimeLoop.h"
@@ -193,7 +192,7 @@ int run_command_line(int argc, char** argv) {
     if (std::string(argv[1]) == "extract") return run_extract(parse(argc, argv, 2));
     Arguments a = parse(argc, argv, 1);
     log::set_quiet(a.quiet);
-    if (a.threads) omp_set_num_threads(*a.threads);
+    if (a.threads) set_thread_count(*a.threads);
     if (a.list) {
       if (!a.positional.empty()) throw UsageError("--list takes only a family name");
       for (const auto& key : registered_keys(*a.list)) std::cout << key << "\n";
