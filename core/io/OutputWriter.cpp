@@ -79,7 +79,15 @@ OutputWriter::OutputWriter(const std::string& dir, bool restarting) : dir_(dir) 
   }
   for (const std::string& label : read_reduction_labels(dir_)) {
     reduction_labels_.insert(label);
-    files::remove_if_present(files::tmp_name(reduction_file(dir_, label)));
+    const std::string path = reduction_file(dir_, label);
+    files::remove_if_present(files::tmp_name(path));
+    // A row torn by a system crash (no final newline) would otherwise fuse
+    // with the next appended row: keep only the complete rows.
+    if (fs::exists(path)) {
+      const std::string text = files::read_all(path);
+      if (!text.empty() && text.back() != '\n')
+        files::write_atomic(path, text.substr(0, text.rfind('\n') + 1));
+    }
   }
   for (const auto& [step, path] : list_frame_files(dir_))
     frame_index_[step] =
