@@ -52,12 +52,22 @@ struct Mesh {
   std::vector<const SavedGridField*> fields;
 };
 
+// "grid" for the interior, "grid_with_extra_cells" for interior plus extra
+// cells, else "grid_from_i_j_k" after the first cell.
+std::string mesh_name(const Mesh& m, const Grid& g) {
+  if (m.first == IntVec3::Zero() && m.cells == g.cells) return "grid";
+  if (m.first == -g.extra_cells && m.cells == g.cells + 2 * g.extra_cells)
+    return "grid_with_extra_cells";
+  return "grid_from_" + std::to_string(m.first[0]) + "_" + std::to_string(m.first[1]) + "_" +
+         std::to_string(m.first[2]);
+}
+
 }  // namespace
 
 std::string xdmf_frame_grid(const SavedFrame& f, const std::string& h5) {
   std::ostringstream x;
-  x << "    <Grid Name=\"step_" << f.step << "\" GridType=\"Collection\" CollectionType=\"Spatial\">\n"
-    << "      <Time Value=\"" << num(f.time) << "\"/>\n";
+  x << "      <Grid Name=\"step_" << f.step << "\" GridType=\"Collection\" CollectionType=\"Spatial\">\n"
+    << "        <Time Value=\"" << num(f.time) << "\"/>\n";
   if (f.has_grid) {
     // Cell fields of extent n and node fields of extent n+1 live on the same
     // mesh of n cells; fields that include the extra cells get a second mesh.
@@ -74,40 +84,40 @@ std::string xdmf_frame_grid(const SavedFrame& f, const std::string& h5) {
       m.cells = cells;
       m.fields.push_back(&g);
     }
-    for (const auto& [k, m] : meshes) {
-      const bool interior = m.first == IntVec3::Zero() && m.cells == f.grid.cells;
-      if (!interior && m.fields.empty()) continue;
+    // The interior mesh first, then any other (in key order).
+    std::vector<const Mesh*> order;
+    for (const auto& [k, m] : meshes)
+      if (m.first == IntVec3::Zero() && m.cells == f.grid.cells) order.insert(order.begin(), &m);
+      else if (!m.fields.empty()) order.push_back(&m);
+    for (const Mesh* mp : order) {
+      const Mesh& m = *mp;
       const Vec3 origin = f.grid.lower + f.grid.dx.cwiseProduct(m.first.cast<double>());
-      x << "      <Grid Name=\"" << (interior ? std::string("grid")
-                                              : "grid_from_" + std::to_string(m.first[0]) + "_" +
-                                                    std::to_string(m.first[1]) + "_" +
-                                                    std::to_string(m.first[2]))
-        << "\" GridType=\"Uniform\">\n"
-        << "        <Topology TopologyType=\"3DCoRectMesh\" Dimensions=\""
+      x << "        <Grid Name=\""   << mesh_name(m, f.grid) << "\" GridType=\"Uniform\">\n"
+        << "          <Topology TopologyType=\"3DCoRectMesh\" Dimensions=\""
         << dims_kji(m.cells + IntVec3::Ones()) << "\"/>\n"
         // ORIGIN_DXDYDZ lists origin and spacing slowest direction first
         // (z y x), like Dimensions.
-        << "        <Geometry GeometryType=\"ORIGIN_DXDYDZ\">\n"
-        << "          <DataItem Name=\"Origin\" Dimensions=\"3\" NumberType=\"Float\" "
+        << "          <Geometry GeometryType=\"ORIGIN_DXDYDZ\">\n"
+        << "            <DataItem Name=\"Origin\" Dimensions=\"3\" NumberType=\"Float\" "
            "Precision=\"8\" Format=\"XML\">"
-        << num(origin[2]) << " " << num(origin[1]) << " " << num(origin[0]) << "</DataItem>\n"
-        << "          <DataItem Name=\"Spacing\" Dimensions=\"3\" NumberType=\"Float\" "
+        << num(origin[2]) << " "   << num(origin[1]) << " "   << num(origin[0]) << "</DataItem>\n"
+        << "            <DataItem Name=\"Spacing\" Dimensions=\"3\" NumberType=\"Float\" "
            "Precision=\"8\" Format=\"XML\">"
-        << num(f.grid.dx[2]) << " " << num(f.grid.dx[1]) << " " << num(f.grid.dx[0])
+        << num(f.grid.dx[2]) << " "   << num(f.grid.dx[1]) << " "   << num(f.grid.dx[0])
         << "</DataItem>\n"
-        << "        </Geometry>\n";
+        << "          </Geometry>\n";
       for (const SavedGridField* g : m.fields) {
         const FieldArray& d = g->field.data;
         std::string dims = dims_kji(g->extent);
         if (d.components > 1) dims += " " + std::to_string(d.components);
-        x << "        <Attribute Name=\"" << escape(d.label) << "_mat" << d.material
-          << "\" AttributeType=\"" << attribute_type(d.components) << "\" Center=\""
+        x << "          <Attribute Name=\""   << escape(d.label) << "_mat"   << d.material
+          << "\" AttributeType=\""   << attribute_type(d.components) << "\" Center=\""
           << (g->field.location == GridLocation::Node ? "Node" : "Cell") << "\">\n";
         data_item(x, dims, "Float",
-                  h5 + ":/grid/mat" + std::to_string(d.material) + "/" + d.label, "          ");
-        x << "        </Attribute>\n";
+                  h5 + ":/grid/mat" + std::to_string(d.material) + "/" + d.label, "            ");
+        x << "          </Attribute>\n";
       }
-      x << "      </Grid>\n";
+      x << "        </Grid>\n";
     }
   }
   for (const SavedParticles& p : f.particles) {
@@ -116,26 +126,26 @@ std::string xdmf_frame_grid(const SavedFrame& f, const std::string& h5) {
     if (p.count == 0) continue;
     const std::string n = std::to_string(p.count);
     const std::string base = h5 + ":/particles/mat" + std::to_string(p.block.material) + "/";
-    x << "      <Grid Name=\"particles_mat" << p.block.material << "\" GridType=\"Uniform\">\n"
-      << "        <Topology TopologyType=\"Polyvertex\" NumberOfElements=\"" << n
+    x << "        <Grid Name=\"particles_mat"   << p.block.material << "\" GridType=\"Uniform\">\n"
+      << "          <Topology TopologyType=\"Polyvertex\" NumberOfElements=\""   << n
       << "\" NodesPerElement=\"1\"/>\n"
-      << "        <Geometry GeometryType=\"XYZ\">\n";
-    data_item(x, n + " 3", "Float", base + "position", "          ");
-    x << "        </Geometry>\n"
-      << "        <Attribute Name=\"particleID\" AttributeType=\"Scalar\" Center=\"Node\">\n";
-    data_item(x, n, "Int", base + "particleID", "          ");
-    x << "        </Attribute>\n";
+      << "          <Geometry GeometryType=\"XYZ\">\n";
+    data_item(x, n + " 3", "Float", base + "position", "            ");
+    x << "          </Geometry>\n"
+      << "          <Attribute Name=\"particleID\" AttributeType=\"Scalar\" Center=\"Node\">\n";
+    data_item(x, n, "Int", base + "particleID", "            ");
+    x << "          </Attribute>\n";
     for (const FieldArray& d : p.block.fields) {
       std::string dims = n;
       if (d.components > 1) dims += " " + std::to_string(d.components);
-      x << "        <Attribute Name=\"" << escape(d.label) << "\" AttributeType=\""
+      x << "          <Attribute Name=\""   << escape(d.label) << "\" AttributeType=\""
         << attribute_type(d.components) << "\" Center=\"Node\">\n";
-      data_item(x, dims, "Float", base + d.label, "          ");
-      x << "        </Attribute>\n";
+      data_item(x, dims, "Float", base + d.label, "            ");
+      x << "          </Attribute>\n";
     }
-    x << "      </Grid>\n";
+    x << "        </Grid>\n";
   }
-  x << "    </Grid>\n";
+  x << "      </Grid>\n";
   return x.str();
 }
 

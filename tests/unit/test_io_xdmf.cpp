@@ -118,7 +118,7 @@ TEST(IoXdmf, IndexDescribesFramesAndResolves) {
 
     // temp_CC includes the extra cells: its own mesh of (5,4,6) cells whose
     // origin is lower - extra*dx = (-1.25, 0, 1.875).
-    pugi::xml_node extra = child_grid(f, "grid_from_-1_-1_-1");
+    pugi::xml_node extra = child_grid(f, "grid_with_extra_cells");
     ASSERT_TRUE(extra);
     EXPECT_STREQ(extra.child("Topology").attribute("Dimensions").value(), "7 5 6");
     EXPECT_EQ(numbers(extra.child("Geometry")
