@@ -92,7 +92,7 @@ std::string xdmf_frame_grid(const SavedFrame& f, const std::string& h5) {
     for (const Mesh* mp : order) {
       const Mesh& m = *mp;
       const Vec3 origin = f.grid.lower + f.grid.dx.cwiseProduct(m.first.cast<double>());
-      x << "        <Grid Name=\""   << mesh_name(m, f.grid) << "\" GridType=\"Uniform\">\n"
+      x << "        <Grid Name=\"" << mesh_name(m, f.grid) << "\" GridType=\"Uniform\">\n"
         << "          <Topology TopologyType=\"3DCoRectMesh\" Dimensions=\""
         << dims_kji(m.cells + IntVec3::Ones()) << "\"/>\n"
         // ORIGIN_DXDYDZ lists origin and spacing slowest direction first
@@ -100,18 +100,18 @@ std::string xdmf_frame_grid(const SavedFrame& f, const std::string& h5) {
         << "          <Geometry GeometryType=\"ORIGIN_DXDYDZ\">\n"
         << "            <DataItem Name=\"Origin\" Dimensions=\"3\" NumberType=\"Float\" "
            "Precision=\"8\" Format=\"XML\">"
-        << num(origin[2]) << " "   << num(origin[1]) << " "   << num(origin[0]) << "</DataItem>\n"
+        << num(origin[2]) << " " << num(origin[1]) << " " << num(origin[0]) << "</DataItem>\n"
         << "            <DataItem Name=\"Spacing\" Dimensions=\"3\" NumberType=\"Float\" "
            "Precision=\"8\" Format=\"XML\">"
-        << num(f.grid.dx[2]) << " "   << num(f.grid.dx[1]) << " "   << num(f.grid.dx[0])
+        << num(f.grid.dx[2]) << " " << num(f.grid.dx[1]) << " " << num(f.grid.dx[0])
         << "</DataItem>\n"
         << "          </Geometry>\n";
       for (const SavedGridField* g : m.fields) {
         const FieldArray& d = g->field.data;
         std::string dims = dims_kji(g->extent);
         if (d.components > 1) dims += " " + std::to_string(d.components);
-        x << "          <Attribute Name=\""   << escape(d.label) << "_mat"   << d.material
-          << "\" AttributeType=\""   << attribute_type(d.components) << "\" Center=\""
+        x << "          <Attribute Name=\"" << escape(d.label) << "_mat" << d.material
+          << "\" AttributeType=\"" << attribute_type(d.components) << "\" Center=\""
           << (g->field.location == GridLocation::Node ? "Node" : "Cell") << "\">\n";
         data_item(x, dims, "Float",
                   h5 + ":/grid/mat" + std::to_string(d.material) + "/" + d.label, "            ");
@@ -126,8 +126,8 @@ std::string xdmf_frame_grid(const SavedFrame& f, const std::string& h5) {
     if (p.count == 0) continue;
     const std::string n = std::to_string(p.count);
     const std::string base = h5 + ":/particles/mat" + std::to_string(p.block.material) + "/";
-    x << "        <Grid Name=\"particles_mat"   << p.block.material << "\" GridType=\"Uniform\">\n"
-      << "          <Topology TopologyType=\"Polyvertex\" NumberOfElements=\""   << n
+    x << "        <Grid Name=\"particles_mat" << p.block.material << "\" GridType=\"Uniform\">\n"
+      << "          <Topology TopologyType=\"Polyvertex\" NumberOfElements=\"" << n
       << "\" NodesPerElement=\"1\"/>\n"
       << "          <Geometry GeometryType=\"XYZ\">\n";
     data_item(x, n + " 3", "Float", base + "position", "            ");
@@ -138,7 +138,7 @@ std::string xdmf_frame_grid(const SavedFrame& f, const std::string& h5) {
     for (const FieldArray& d : p.block.fields) {
       std::string dims = n;
       if (d.components > 1) dims += " " + std::to_string(d.components);
-      x << "          <Attribute Name=\""   << escape(d.label) << "\" AttributeType=\""
+      x << "          <Attribute Name=\"" << escape(d.label) << "\" AttributeType=\""
         << attribute_type(d.components) << "\" Center=\"Node\">\n";
       data_item(x, dims, "Float", base + d.label, "            ");
       x << "          </Attribute>\n";
