@@ -7,9 +7,13 @@
 //                           structured grid, particles as point clouds
 //   <Label>.dat             reduction labels: "time value" or "time x y z" rows
 //   checkpoints/            see CheckpointStore
+//   tephra-reductions.txt   the reduction labels written (so that a fresh run
+//                           removes only Tephra's own .dat files)
 // Every file is written under a temporary name and renamed, so an interrupted
-// run never leaves a half-written file.
+// run never leaves a half-written file. .dat rows are appended with a single
+// write(2) each (see core/io/detail/Files.h), so no partial row is left either.
 #include <map>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -20,7 +24,9 @@ namespace tephra {
 class OutputWriter {
  public:
   // Creates `dir` if needed. When `restarting` is false, stale frames, .dat
-  // files and the XDMF index from an earlier run in `dir` are removed.
+  // files and the XDMF index from an earlier run in `dir` are removed (also
+  // its input.ups and checkpoints/c*.h5, which belong to that run). When
+  // restarting, the frames on disk are indexed again.
   OutputWriter(const std::string& dir, bool restarting);
 
   const std::string& dir() const { return dir_; }
@@ -31,6 +37,7 @@ class OutputWriter {
   void write_frame(const OutputFrame& frame);
 
   // Appends one row per label to <label>.dat, full precision (%.17g).
+  // A label must be a plain file name (no '/', no whitespace).
   void append_reductions(double time, const std::map<std::string, std::vector<double>>& values);
 
   // For a restart from `step`/`time`: drops .dat rows with time > `time`
@@ -39,16 +46,29 @@ class OutputWriter {
   void truncate_after(int step, double time);
 
  private:
+  void write_index() const;               // rewrites tephra.xdmf from frame_index_
+  void add_reduction_label(const std::string& label);
+
   std::string dir_;
+  std::map<int, std::string> frame_index_;  // step -> its XDMF <Grid> element
+  std::set<std::string> reduction_labels_;  // as listed in tephra-reductions.txt
 };
 
-// Checkpoints: checkpoints/c<step>.h5 with every array of a StateArchive,
-// keeping only the newest `cycle` of them.
+// Checkpoints: checkpoints/c<step>.h5 (step zero-padded to 5+ digits) with
+// every array of a StateArchive, keeping only the newest `cycle` of them.
+// Writing step s also removes checkpoints newer than s: after a restart from
+// an older checkpoint they belong to an abandoned continuation.
+// File layout: attrs format "tephra-checkpoint-1", step; /doubles/<name> (f64)
+// and /ints/<name> (i64), 1-D, with HDF5's Fletcher-32 checksum so a
+// corrupted file is detected on read. In names, '%', '/' and a leading '.'
+// are written as %25, %2F and %2E.
 class StateArchive;
 
 class CheckpointStore {
  public:
-  CheckpointStore(const std::string& output_dir, int cycle);
+  CheckpointStore(const std::string& output_dir, int cycle);  // cycle >= 1
+  const std::string& dir() const { return dir_; }             // output_dir/checkpoints
+  std::string path(int step) const;                           // dir()/c<step>.h5
   void write(int step, const StateArchive& state);
   std::vector<int> steps() const;                   // available checkpoints, ascending
   StateArchive read(int step) const;                // throws RuntimeFailure if absent or corrupt
