@@ -14,10 +14,10 @@ namespace tephra::test {
 // within h*sqrt(3)/2 of the surface: by Steiner's formula 2 (h sqrt(3)/2) A
 // + O(h^2) for a surface of area A, i.e.
 //     |V_h - V| / V <= sqrt(3) A h / V   (to leading order).
-inline double counted_volume(const GeometryPiece& piece, double h) {
+inline double counted_volume(const GeometryPiece& piece, double h,
+                             const Vec3& shift = Vec3(0.3141592, 0.2718281, 0.1618033)) {
   const BoundingBox b = piece.bounding_box();
   const Vec3 lo = b.lo - Vec3::Constant(h);
-  const Vec3 shift(0.3141592, 0.2718281, 0.1618033);
   const Vec3 n = ((b.hi - lo) / h).array().ceil() + 1.0;
   long count = 0;
   for (int i = 0; i < n.x(); ++i)
