@@ -2,6 +2,7 @@
 // Vaango's schema (ups_spec.xml, CommonTags); where Vaango's code reads other
 // spellings than its schema (ellipsoid rx/ry/rz, torus axis/theta) both are
 // accepted. Every invalid value is a DeckError at the element.
+#include <Eigen/Geometry>
 #include <cmath>
 
 #include "core/deck/DeckNode.h"

@@ -2,6 +2,7 @@
 // the ray-parity inside test (see TriMesh.h).
 #include "core/geometry/TriMesh.h"
 
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
 #include <fstream>

@@ -13,7 +13,11 @@ std::shared_ptr<GeometryPiece> parse_tri(const DeckNode& node) {
   geometry_detail::require_known_children(
       node, {"file_name_prefix", "name", "file_type", "scaling_factor", "translation_vector",
              "reflection_vector", "axis_sequence"});
-  const DeckNode* prefix_node = node.child_any({"file_name_prefix", "name"});
+  const DeckNode* prefix_node = node.child("file_name_prefix");
+  if (const DeckNode* old = node.child("name")) {
+    if (prefix_node) old->fail("tri: both <file_name_prefix> and <name> given; use one");
+    prefix_node = old;
+  }
   if (!prefix_node || prefix_node->text.empty())
     node.fail("tri: missing required element <file_name_prefix>");
   if (const DeckNode* ft = node.child("file_type"); ft && ft->text != "tri")
