@@ -1,0 +1,25 @@
+#pragma once
+// What a model creator reads its parameters from. models/ depends on Eigen
+// only (DESIGN.md §1), so it cannot see the deck tree; the driver wraps the
+// deck element (e.g. <constitutive_model>) in an implementation of this
+// interface whose failures throw DeckError / MissingFeature located at the
+// element. Every name a creator reads is marked as used, so the driver can
+// reject unknown children afterwards (no silently ignored parameters).
+#include <string>
+
+namespace tephra {
+
+class ModelParameters {
+ public:
+  virtual ~ModelParameters() = default;
+  virtual bool has(const std::string& name) const = 0;
+  virtual double get_double(const std::string& name) const = 0;  // required
+  virtual double get_double(const std::string& name, double fallback) const = 0;
+  virtual bool get_bool(const std::string& name, bool fallback) const = 0;
+  // Invalid value: throws (DeckError at the parameter's element).
+  [[noreturn]] virtual void fail(const std::string& name, const std::string& message) const = 0;
+  // Valid input that asks for something not implemented (MissingFeature).
+  [[noreturn]] virtual void missing_feature(const std::string& name, const std::string& what) const = 0;
+};
+
+}  // namespace tephra

@@ -1,0 +1,59 @@
+#include "models/solid/CompNeoHookean.h"
+
+#include <cmath>
+
+#include <Eigen/LU>
+
+#include "models/ModelParameters.h"
+
+namespace tephra {
+
+SolidPointResult comp_neo_hookean_point(const Eigen::Matrix3d& F, double density0,
+                                        const CompNeoHookeanParams& p) {
+  const double K = p.bulk_modulus, G = p.shear_modulus;
+  const double J = F.determinant();
+  const Eigen::Matrix3d B = F * F.transpose();
+  const Eigen::Matrix3d I = Eigen::Matrix3d::Identity();
+  // Bbar = J^{-2/3} B: the isochoric left Cauchy-Green tensor (det Bbar = 1).
+  const Eigen::Matrix3d Bbar = std::pow(J, -2.0 / 3.0) * B;
+  const double trBbar = Bbar.trace();
+  const Eigen::Matrix3d devBbar = Bbar - (trBbar / 3.0) * I;
+
+  SolidPointResult r;
+  // sigma = K/2 (J - 1/J) I + (G/J) dev(Bbar)   (Simo & Hughes 1998, eq. 9.2.x; Vaango CompNeoHook)
+  r.stress = (0.5 * K * (J - 1.0 / J)) * I + (G / J) * devBbar;
+  // W = K/2 [ (J^2-1)/2 - ln J ] + G/2 (tr Bbar - 3), per reference volume.
+  r.energy_density = 0.5 * K * (0.5 * (J * J - 1.0) - std::log(J)) + 0.5 * G * (trBbar - 3.0);
+  // Dilatational wave speed in the current configuration (rho = rho0/J).
+  const double rho = density0 / J;
+  r.wave_speed = std::sqrt((K + 4.0 * G / 3.0) / rho);
+  return r;
+}
+
+long CompNeoHookean::update(const SolidUpdateInput& in, const SolidUpdateOutput& out) const {
+  const size_t n = in.F.size();
+  for (size_t i = 0; i < n; ++i) {
+    const double J = in.F[i].determinant();
+    if (!(J > 0.0) || !std::isfinite(J)) return static_cast<long>(i);
+    const SolidPointResult r = comp_neo_hookean_point(in.F[i], in.density0, p_);
+    if (!r.stress.allFinite()) return static_cast<long>(i);
+    out.stress[i] = r.stress;
+    out.wave_speed[i] = r.wave_speed;
+    out.energy_density[i] = r.energy_density;
+  }
+  return -1;
+}
+
+ConstitutiveModelP CompNeoHookean::create(const ModelParameters& params) {
+  CompNeoHookeanParams p;
+  p.bulk_modulus = params.get_double("bulk_modulus");
+  p.shear_modulus = params.get_double("shear_modulus");
+  if (!(p.bulk_modulus > 0.0)) params.fail("bulk_modulus", "bulk_modulus must be > 0");
+  if (!(p.shear_modulus > 0.0)) params.fail("shear_modulus", "shear_modulus must be > 0");
+  // Vaango's optional modified EOS (a different pressure in compression) is not implemented.
+  if (params.get_bool("useModifiedEOS", false))
+    params.missing_feature("useModifiedEOS", "comp_neo_hook with useModifiedEOS = true");
+  return std::make_shared<CompNeoHookean>(p);
+}
+
+}  // namespace tephra

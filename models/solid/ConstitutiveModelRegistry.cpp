@@ -1,0 +1,50 @@
+// The constitutive-model registry: Vaango type name -> creator.
+#include <algorithm>
+#include <functional>
+#include <map>
+
+#include "models/ModelParameters.h"
+#include "models/solid/CompNeoHookean.h"
+#include "models/solid/ConstitutiveModel.h"
+
+namespace tephra {
+
+namespace {
+using Creator = std::function<ConstitutiveModelP(const ModelParameters&)>;
+
+const std::map<std::string, Creator>& creators() {
+  static const std::map<std::string, Creator> table = {
+      {"comp_neo_hook", &CompNeoHookean::create},
+  };
+  return table;
+}
+}  // namespace
+
+std::vector<std::string> constitutive_model_types() {
+  std::vector<std::string> keys;
+  for (const auto& [k, v] : creators()) keys.push_back(k);
+  return keys;
+}
+
+// The type attribute values of Vaango's schema (ups_spec/constitutive_models.xml).
+const std::vector<std::string>& vaango_constitutive_model_types() {
+  static const std::vector<std::string> types = {
+      "comp_mooney_rivlin", "comp_neo_hook", "comp_neo_hook_plastic", "elastic_plastic",
+      "hypo_elastic", "hypo_elastic_fortran", "hypo_elastic_fracture", "hypo_elastic_mms",
+      "elastic_plastic_hp", "ideal_gas", "membrane", "murnaghanMPM", "mw_visco_elastic", "rigid",
+      "shell_CNH", "trans_iso_hyper", "visco_plastic", "visco_scram", "visco_trans_iso_hyper",
+      "water", "kayenta", "diamm", "cnh_mms", "cnh_damage", "cnhp_damage", "UCNH", "program_burn",
+      "jwlpp_mpm", "p_alpha", "nonlocal_drucker_prager", "Arenisca", "Arenisca3", "arena",
+      "arena_mixture", "Arenisca4", "soil_model_brannon", "tabular_eos", "tabular_plasticity",
+      "tabular_plasticity_cap", "mohr_coulomb", "camclay", "polar_orthotropic_hypoelastic",
+      "viscoelastic_fortran"};
+  return types;
+}
+
+ConstitutiveModelP create_constitutive_model(const std::string& type, const ModelParameters& params) {
+  auto it = creators().find(type);
+  if (it == creators().end()) return nullptr;
+  return it->second(params);
+}
+
+}  // namespace tephra

@@ -1,0 +1,85 @@
+#include "mpm/GridBoundaryConditions.h"
+
+#include <string>
+
+#include "core/deck/DeckNode.h"
+
+namespace tephra {
+
+namespace {
+
+int face_index(const DeckNode& face) {
+  const std::string side = face.require_attribute("side");
+  static const char* names[6] = {"x-", "x+", "y-", "y+", "z-", "z+"};
+  for (int f = 0; f < 6; ++f)
+    if (side == names[f]) return f;
+  face.fail("Face side '" + side + "' is not one of x-, x+, y-, y+, z-, z+");
+}
+
+// Labels that only ICE reads; the MPM component leaves them to ICE.
+bool ice_only_label(const std::string& label) {
+  return label == "Pressure" || label == "Density" || label == "SpecificVol";
+}
+
+}  // namespace
+
+GridBoundaryConditions parse_grid_boundary_conditions(const DeckNode* bcs, int material) {
+  GridBoundaryConditions out;
+  if (!bcs) return out;
+  for (const DeckNode& face : bcs->children) {
+    if (face.name != "Face") face.fail("unknown element <" + face.name + "> in <BoundaryConditions>");
+    if (!face.attribute("side")) {
+      // Vaango also accepts circle/rectangle/annulus patches of a face.
+      face.missing_feature("boundary conditions on part of a face (circle, rectangle, annulus)");
+    }
+    const int f = face_index(face);
+    for (const DeckNode& bc : face.children) {
+      if (bc.name != "BCType") bc.fail("unknown element <" + bc.name + "> in <Face>");
+      const std::string id = bc.require_attribute("id");
+      const std::string var = bc.require_attribute("var");
+      const std::string label = bc.require_attribute("label");
+      if (id != "all") {
+        const auto mid = parse_integer(id);
+        if (!mid) bc.fail("BCType id must be 'all' or a material index, not '" + id + "'");
+        if (*mid != material) continue;
+      }
+      if (ice_only_label(label)) continue;
+      if (label == "Velocity" && var == "Dirichlet") {
+        out.face[f].kind = FaceVelocityBC::Kind::Velocity;
+        out.face[f].value = bc.get_vec3("value");
+      } else if (label == "Symmetric" && var == "symmetry") {
+        out.face[f].kind = FaceVelocityBC::Kind::Symmetry;
+      } else if (label == "Symmetric" || var == "symmetry") {
+        bc.fail("a symmetry condition is written var=\"symmetry\" label=\"Symmetric\"");
+      } else {
+        bc.missing_feature("MPM boundary condition var=\"" + var + "\" label=\"" + label + "\"");
+      }
+    }
+  }
+  return out;
+}
+
+void GridBoundaryConditions::apply(const NodeGrid& g, std::vector<Vec3>& velocity) const {
+  // Visits every node of face f (direction d = f/2; plane index 0 or n_d - 1).
+  auto for_face = [&](int f, auto&& fn) {
+    const int d = f / 2;
+    const int plane = (f % 2 == 0) ? 0 : g.n[d] - 1;
+    const int a = (d + 1) % 3, b = (d + 2) % 3;
+    IntVec3 c;
+    c[d] = plane;
+    for (int jb = 0; jb < g.n[b]; ++jb)
+      for (int ja = 0; ja < g.n[a]; ++ja) {
+        c[a] = ja;
+        c[b] = jb;
+        fn(velocity[g.index(c)], d);
+      }
+  };
+  for (int f = 0; f < 6; ++f)
+    if (face[f].kind == FaceVelocityBC::Kind::Velocity)
+      for_face(f, [&](Vec3& v, int) { v = face[f].value; });
+  for (int f = 0; f < 6; ++f)
+    if (face[f].kind == FaceVelocityBC::Kind::Symmetry)
+      for_face(f, [&](Vec3& v, int d) { v[d] = 0.0; });
+}
+
+}  // namespace tephra

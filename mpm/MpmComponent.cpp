@@ -1,0 +1,132 @@
+#include "mpm/MpmComponent.h"
+
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+#include <Eigen/LU>
+
+#include "core/base/Errors.h"
+#include "core/base/PhaseTimers.h"
+#include "mpm/Transfers.h"
+
+namespace tephra {
+
+MpmComponent::MpmComponent(MpmSetup setup) : setup_(std::move(setup)) {
+  const Grid& g = setup_.grid;
+  for (MpmMaterial& m : setup_.materials) {
+    // Nodes of the interior and extra cells: node 0 at lower - extra*dx.
+    m.grid.origin = g.lower - (g.extra_cells.cast<double>().array() * g.dx.array()).matrix();
+    m.grid.h = g.dx;
+    m.grid.n = g.cells + 2 * g.extra_cells + IntVec3::Ones();
+    m.grid.reset();
+  }
+}
+
+void MpmComponent::initialize() {
+  long long next_id = 0;
+  for (MpmMaterial& m : setup_.materials) {
+    m.particles = Particles{};
+    seed_particles(setup_.grid, m.sources, m.density, m.particles, next_id);
+    update_stress(m, 0);   // sigma(F = I) = 0, and the initial wave speeds
+    project_to_grid(m, 0, "initialize");  // g.* fields of the initial state
+  }
+}
+
+// Vaango's explicit rule (CompNeoHook::computeStressTensor): per direction d,
+// dt = min_p h_d / (c_p + |v_p,d|), c_p the dilatational wave speed of the
+// particle's current state. Here c_p is from the last stress update (J_{n+1})
+// and v_p the current velocity v_{n+1}. Infinity when there are no particles.
+double MpmComponent::stable_timestep() const {
+  double dt = std::numeric_limits<double>::infinity();
+  for (const MpmMaterial& m : setup_.materials) {
+    const Particles& p = m.particles;
+    for (std::size_t i = 0; i < p.size(); ++i)
+      for (int d = 0; d < 3; ++d)
+        dt = std::min(dt, setup_.grid.dx[d] / (p.wave_speed[i] + std::abs(p.v[i][d])));
+  }
+  return dt;
+}
+
+void MpmComponent::fail_particle(const MpmMaterial& m, std::size_t i, int step, const std::string& phase,
+                                 const std::string& what) const {
+  const Particles& p = m.particles;
+  std::ostringstream s;
+  s.precision(17);
+  s << "MPM step " << step << ", " << phase << ": material " << m.index << " particle id " << p.id[i]
+    << " at (" << p.x[i][0] << ", " << p.x[i][1] << ", " << p.x[i][2] << "): " << what;
+  throw NumericalFailure(s.str());
+}
+
+// Stencils + P2G + internal force (Alg. 5-6) on a reset grid.
+void MpmComponent::project_to_grid(MpmMaterial& m, int step, const char* phase) {
+  {
+    PhaseTimers::Scope t(phase_timers(), "MPM: interpolate particles to grid");
+    const long bad = compute_stencils(m.particles, m.grid, m.stencils);
+    if (bad >= 0) fail_particle(m, std::size_t(bad), step, phase, "particle is outside the grid");
+    m.grid.reset();
+    particles_to_grid(m.particles, m.stencils, setup_.gravity, m.grid);
+    m.bcs.apply(m.grid, m.grid.velocity);
+  }
+  {
+    PhaseTimers::Scope t(phase_timers(), "MPM: compute internal force");
+    compute_internal_force(m.particles, m.stencils, m.grid);
+  }
+}
+
+// sigma_{n+1}, c, W from F_{n+1} (Alg. 11); V_{n+1} = J V0 (Alg. 9).
+void MpmComponent::update_stress(MpmMaterial& m, int step) {
+  PhaseTimers::Scope t(phase_timers(), "MPM: compute stress tensor");
+  Particles& p = m.particles;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const double J = p.F[i].determinant();
+    if (!(J > 0.0) || !std::isfinite(J)) {
+      std::ostringstream s;
+      s << "Jacobian det F = " << J << " (must be > 0)";
+      fail_particle(m, i, step, "compute deformation gradient", s.str());
+    }
+    p.volume[i] = J * p.volume0[i];
+  }
+  const long bad = m.model->update({p.F, m.density}, {p.stress, p.wave_speed, p.energy_density});
+  if (bad >= 0) fail_particle(m, std::size_t(bad), step, "compute stress tensor", "non-finite stress");
+}
+
+// One explicit USL step of one material (Vaango theory manual §1.5, Alg. 2).
+void MpmComponent::advance_material(MpmMaterial& m, double dt, int step) {
+  Particles& p = m.particles;
+  project_to_grid(m, step, "interpolate particles to grid");  // m_g, v_g (+BC), f_ext, f_int
+  {
+    PhaseTimers::Scope t(phase_timers(), "MPM: integrate grid acceleration");
+    integrate_grid_velocity(m.grid, dt);                // a_g = f/m_g, v*_g = v_g + a_g dt
+    m.bcs.apply(m.grid, m.grid.velocity_star);           // v*_g on Dirichlet / symmetry faces
+    acceleration_from_velocities(m.grid, dt);           // a_g = (v*_g - v_g)/dt
+  }
+  {
+    PhaseTimers::Scope t(phase_timers(), "MPM: compute deformation gradient");
+    velocity_gradients(m.stencils, m.grid, m.L);        // l_p = sum v*_g grad S^T
+    for (std::size_t i = 0; i < p.size(); ++i)
+      p.F[i] = (Mat3::Identity() + dt * m.L[i]) * p.F[i];  // F_{n+1} = (I + dt l) F_n  (eq. 1.74-1.75)
+  }
+  update_stress(m, step);
+  {
+    PhaseTimers::Scope t(phase_timers(), "MPM: interpolate to particles and update");
+    grid_to_particles(m.stencils, m.grid, dt, p);       // v_p += dt a, x_p += dt v*
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      if (!p.v[i].allFinite()) fail_particle(m, i, step, "interpolate to particles", "non-finite velocity");
+      for (int d = 0; d < 3; ++d) {
+        const double xi = (p.x[i][d] - m.grid.origin[d]) / m.grid.h[d];
+        if (!(xi >= 0.0 && xi < m.grid.n[d] - 1))
+          fail_particle(m, i, step, "interpolate to particles", "particle left the grid");
+      }
+    }
+  }
+}
+
+void MpmComponent::advance(double /*t*/, double dt, int step) {
+  for (MpmMaterial& m : setup_.materials) advance_material(m, dt, step);
+}
+
+std::vector<std::string> mpm_interpolators() { return {"linear"}; }
+std::vector<std::string> mpm_contact_types() { return {"null"}; }
+
+}  // namespace tephra

@@ -1,0 +1,80 @@
+#pragma once
+// The explicit MPM component (update-stress-last, linear shape functions,
+// null contact: each material moves on its own grid field). See advance() in
+// MpmComponent.cpp for the step, one named phase per line.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/grid/Grid.h"
+#include "core/sim/Component.h"
+#include "models/solid/ConstitutiveModel.h"
+#include "mpm/GridBoundaryConditions.h"
+#include "mpm/MpmFlags.h"
+#include "mpm/NodeGrid.h"
+#include "mpm/ParticleSeeding.h"
+#include "mpm/Particles.h"
+#include "mpm/ShapeLinear.h"
+
+namespace tephra {
+
+struct Deck;
+
+struct MpmMaterial {
+  int index = 0;                        // material index (order in the deck)
+  double density = 0.0;                 // rho0 [kg/m^3]
+  double thermal_conductivity = 0.0;    // read, unused (no heat conduction yet)
+  double specific_heat = 0.0;           // read, unused
+  ConstitutiveModelP model;
+  std::vector<ParticleSource> sources;  // geom_objects, seeded by initialize()
+  GridBoundaryConditions bcs;
+
+  Particles particles;
+  NodeGrid grid;                        // this step's node fields (and g.* output)
+  std::vector<LinearStencil> stencils;  // scratch of the step
+  std::vector<Mat3> L;                  // velocity gradients of the step
+};
+
+struct MpmSetup {
+  Grid grid;
+  MpmFlags flags;
+  Vec3 gravity = Vec3::Zero();
+  std::vector<MpmMaterial> materials;
+};
+
+class MpmComponent final : public Component {
+ public:
+  explicit MpmComponent(MpmSetup setup);
+
+  std::string name() const override { return "MPM"; }
+  void initialize() override;
+  double stable_timestep() const override;
+  void advance(double t, double dt, int step) override;
+  void fill_output(const std::set<std::string>& labels, OutputFrame& frame) const override;
+  std::map<std::string, std::vector<double>> reductions(const std::set<std::string>& labels) const override;
+  std::set<std::string> known_labels() const override;
+  void save_state(StateArchive& archive) const override;
+  void load_state(const StateArchive& archive) override;
+
+  const Grid& grid() const { return setup_.grid; }
+  const std::vector<MpmMaterial>& materials() const { return setup_.materials; }
+  std::vector<MpmMaterial>& materials() { return setup_.materials; }
+
+ private:
+  void advance_material(MpmMaterial& m, double dt, int step);
+  void project_to_grid(MpmMaterial& m, int step, const char* phase);
+  void update_stress(MpmMaterial& m, int step);
+  [[noreturn]] void fail_particle(const MpmMaterial& m, std::size_t i, int step, const std::string& phase,
+                                  const std::string& what) const;
+  MpmSetup setup_;
+};
+
+// Reads the MPM parts of the deck (<MPM>, <PhysicalConstants>, <MaterialProperties><MPM>,
+// <Grid> and its <BoundaryConditions>). Throws DeckError / MissingFeature.
+std::unique_ptr<MpmComponent> make_mpm_component(const Deck& deck);
+
+// Registries for `tephra --list`.
+std::vector<std::string> mpm_interpolators();  // {"linear"}
+std::vector<std::string> mpm_contact_types();  // {"null"}
+
+}  // namespace tephra

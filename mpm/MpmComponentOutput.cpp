@@ -1,0 +1,191 @@
+// MpmComponent: saved labels, reduction variables and the restart state.
+#include <string>
+
+#include "mpm/MpmComponent.h"
+
+namespace tephra {
+
+namespace {
+
+const char* const kParticleLabels[] = {"p.x", "p.particleID", "p.volume", "p.velocity", "p.stress",
+                                       "p.mass", "p.deformationMeasure", "p.displacement",
+                                       "p.temperature", "p.color", "p.externalforce"};
+const char* const kNodeLabels[] = {"g.mass", "g.volume", "g.velocity", "g.velocity_star", "g.acceleration",
+                                   "g.externalforce", "g.internalforce", "g.stressFS"};
+const char* const kReductionLabels[] = {"KineticEnergy", "StrainEnergy", "TotalMass", "TotalMomentum",
+                                        "CenterOfMassPosition"};
+
+void append(std::vector<double>& out, double v) { out.push_back(v); }
+void append(std::vector<double>& out, const Vec3& v) { out.insert(out.end(), v.data(), v.data() + 3); }
+// Row-major xx, xy, xz, yx, ... (OutputFrame.h), whatever Eigen's storage order.
+void append(std::vector<double>& out, const Mat3& m) {
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 3; ++c) out.push_back(m(r, c));
+}
+
+template <class T>
+FieldArray field(const std::string& label, int material, const std::vector<T>& column) {
+  FieldArray f;
+  f.label = label;
+  f.material = material;
+  f.components = std::is_same_v<T, double> ? 1 : (std::is_same_v<T, Vec3> ? 3 : 9);
+  f.values.reserve(column.size() * f.components);
+  for (const T& v : column) append(f.values, v);
+  return f;
+}
+
+// Inverse of append for the restart state.
+void take(const double* d, double& v) { v = d[0]; }
+void take(const double* d, Vec3& v) { v = Vec3(d[0], d[1], d[2]); }
+void take(const double* d, Mat3& m) {
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 3; ++c) m(r, c) = d[3 * r + c];
+}
+
+template <class T>
+void restore(const StateArchive& a, const std::string& name, std::vector<T>& column) {
+  constexpr int k = std::is_same_v<T, double> ? 1 : (std::is_same_v<T, Vec3> ? 3 : 9);
+  const std::vector<double>& v = a.doubles(name);
+  if (v.size() % k != 0) throw RuntimeFailure("checkpoint array '" + name + "' has a bad size");
+  column.resize(v.size() / k);
+  for (std::size_t i = 0; i < column.size(); ++i) take(v.data() + k * i, column[i]);
+}
+
+template <class T>
+std::vector<double> flatten(const std::vector<T>& column) {
+  std::vector<double> out;
+  for (const T& v : column) append(out, v);
+  return out;
+}
+
+// Calls fn(name, column) for every particle column and node array (the restart state).
+template <class P, class G, class Fn>
+void for_each_column(P& p, G& g, Fn&& fn) {
+  fn("x", p.x);
+  fn("v", p.v);
+  fn("displacement", p.displacement);
+  fn("external_force", p.external_force);
+  fn("F", p.F);
+  fn("stress", p.stress);
+  fn("mass", p.mass);
+  fn("volume", p.volume);
+  fn("volume0", p.volume0);
+  fn("temperature", p.temperature);
+  fn("color", p.color);
+  fn("wave_speed", p.wave_speed);
+  fn("energy_density", p.energy_density);
+  fn("g.mass", g.mass);
+  fn("g.volume", g.volume);
+  fn("g.velocity", g.velocity);
+  fn("g.velocity_star", g.velocity_star);
+  fn("g.acceleration", g.acceleration);
+  fn("g.external_force", g.external_force);
+  fn("g.internal_force", g.internal_force);
+  fn("g.stress", g.stress);
+}
+
+std::string prefix(const MpmMaterial& m) { return "mpm.m" + std::to_string(m.index) + "."; }
+
+}  // namespace
+
+std::set<std::string> MpmComponent::known_labels() const {
+  std::set<std::string> s;
+  for (const char* l : kParticleLabels) s.insert(l);
+  for (const char* l : kNodeLabels) s.insert(l);
+  for (const char* l : kReductionLabels) s.insert(l);
+  return s;
+}
+
+void MpmComponent::fill_output(const std::set<std::string>& labels, OutputFrame& frame) const {
+  for (const MpmMaterial& m : setup_.materials) {
+    const Particles& p = m.particles;
+    ParticleBlock b;
+    b.material = m.index;
+    b.position = p.x;
+    b.id = p.id;
+    auto want = [&](const char* l) { return labels.count(l) > 0; };
+    if (want("p.volume")) b.fields.push_back(field("p.volume", m.index, p.volume));
+    if (want("p.velocity")) b.fields.push_back(field("p.velocity", m.index, p.v));
+    if (want("p.stress")) b.fields.push_back(field("p.stress", m.index, p.stress));
+    if (want("p.mass")) b.fields.push_back(field("p.mass", m.index, p.mass));
+    if (want("p.deformationMeasure")) b.fields.push_back(field("p.deformationMeasure", m.index, p.F));
+    if (want("p.displacement")) b.fields.push_back(field("p.displacement", m.index, p.displacement));
+    if (want("p.temperature")) b.fields.push_back(field("p.temperature", m.index, p.temperature));
+    if (want("p.color")) b.fields.push_back(field("p.color", m.index, p.color));
+    if (want("p.externalforce")) b.fields.push_back(field("p.externalforce", m.index, p.external_force));
+    frame.particles.push_back(std::move(b));
+
+    auto node = [&](const char* label, const auto& column) {
+      if (!want(label)) return;
+      GridFieldArray g;
+      g.location = GridLocation::Node;
+      g.data = field(label, m.index, column);
+      frame.grid_fields.push_back(std::move(g));
+    };
+    const NodeGrid& g = m.grid;
+    node("g.mass", g.mass);
+    node("g.volume", g.volume);
+    node("g.velocity", g.velocity);
+    node("g.velocity_star", g.velocity_star);
+    node("g.acceleration", g.acceleration);
+    node("g.externalforce", g.external_force);
+    node("g.internalforce", g.internal_force);
+    node("g.stressFS", g.stress);
+  }
+}
+
+// As Vaango sums them at the end of a step (new particle state):
+//   KineticEnergy = sum 1/2 m |v|^2, TotalMass = sum m, TotalMomentum = sum m v,
+//   CenterOfMassPosition = sum m x / sum m,
+//   StrainEnergy = sum W(F_p) V0_p: the stored energy of the hyperelastic model
+//   (Vaango's CompNeoHook sums the same W(F) V0), not an integral of sigma:d.
+std::map<std::string, std::vector<double>> MpmComponent::reductions(const std::set<std::string>& labels) const {
+  double ke = 0, se = 0, mass = 0;
+  Vec3 mom = Vec3::Zero(), mx = Vec3::Zero();
+  for (const MpmMaterial& m : setup_.materials) {
+    const Particles& p = m.particles;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      ke += 0.5 * p.mass[i] * p.v[i].squaredNorm();
+      se += p.energy_density[i] * p.volume0[i];
+      mass += p.mass[i];
+      mom += p.mass[i] * p.v[i];
+      mx += p.mass[i] * p.x[i];
+    }
+  }
+  std::map<std::string, std::vector<double>> out;
+  if (labels.count("KineticEnergy")) out["KineticEnergy"] = {ke};
+  if (labels.count("StrainEnergy")) out["StrainEnergy"] = {se};
+  if (labels.count("TotalMass")) out["TotalMass"] = {mass};
+  if (labels.count("TotalMomentum")) out["TotalMomentum"] = {mom[0], mom[1], mom[2]};
+  if (labels.count("CenterOfMassPosition")) {
+    const Vec3 c = mass > 0 ? Vec3(mx / mass) : Vec3::Zero();
+    out["CenterOfMassPosition"] = {c[0], c[1], c[2]};
+  }
+  return out;
+}
+
+void MpmComponent::save_state(StateArchive& a) const {
+  for (const MpmMaterial& m : setup_.materials) {
+    const std::string pre = prefix(m);
+    for_each_column(m.particles, m.grid, [&](const char* name, const auto& col) { a.put(pre + name, flatten(col)); });
+    a.put(pre + "id", std::vector<long long>(m.particles.id));
+  }
+}
+
+void MpmComponent::load_state(const StateArchive& a) {
+  for (MpmMaterial& m : setup_.materials) {
+    const std::string pre = prefix(m);
+    for_each_column(m.particles, m.grid, [&](const char* name, auto& col) { restore(a, pre + name, col); });
+    m.particles.id = a.ints(pre + "id");
+    const std::size_t n = m.particles.size();
+    bool ok = m.particles.id.size() == n;
+    for_each_column(m.particles, m.grid, [&](const char* name, auto& col) {
+      if (name[0] != 'g') ok = ok && col.size() == n;
+      else ok = ok && col.size() == m.grid.count();
+    });
+    if (!ok) throw RuntimeFailure("checkpoint arrays of MPM material " + std::to_string(m.index) +
+                                  " have inconsistent sizes");
+  }
+}
+
+}  // namespace tephra

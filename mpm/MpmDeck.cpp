@@ -1,0 +1,119 @@
+// make_mpm_component: the MPM parts of a deck -> an MpmComponent.
+#include <algorithm>
+
+#include "core/deck/DeckLoader.h"
+#include "core/deck/DeckNode.h"
+#include "core/geometry/GeometryPiece.h"
+#include "mpm/DeckModelParameters.h"
+#include "mpm/MpmComponent.h"
+
+namespace tephra {
+
+namespace {
+
+std::string join(const std::vector<std::string>& v) {
+  std::string s;
+  for (const auto& x : v) s += (s.empty() ? "" : ", ") + x;
+  return s;
+}
+
+ConstitutiveModelP parse_constitutive_model(const DeckNode& cm) {
+  const std::string type = cm.require_attribute("type");
+  DeckModelParameters params(cm);
+  ConstitutiveModelP model = create_constitutive_model(type, params);
+  if (!model) {
+    const auto& vaango = vaango_constitutive_model_types();
+    if (std::find(vaango.begin(), vaango.end(), type) != vaango.end())
+      cm.missing_feature("constitutive_model type '" + type + "' (implemented: " +
+                         join(constitutive_model_types()) + ")");
+    cm.fail("unknown constitutive_model type '" + type + "' (implemented: " + join(constitutive_model_types()) +
+            ")");
+  }
+  params.check_all_used("constitutive_model type '" + type + "'");
+  return model;
+}
+
+ParticleSource parse_geom_object(const DeckNode& go, GeometryRegistry& geometry) {
+  ParticleSource s;
+  s.piece = geometry.parse_geom_object(go);
+  s.res = go.get_int_vec3("res");
+  if ((s.res.array() < 1).any()) go.require_child("res").fail("res must be >= 1 in every direction");
+  s.velocity = go.get_vec3("velocity");
+  s.temperature = go.get_double("temperature");
+  s.color = go.get_double("color", 0.0);
+  return s;
+}
+
+MpmMaterial parse_material(const DeckNode& mat, int index, GeometryRegistry& geometry) {
+  MpmMaterial m;
+  m.index = index;
+  for (const DeckNode& c : mat.children) {
+    if (c.name == "density") {
+      m.density = c.as_double();
+      if (!(m.density > 0.0)) c.fail("density must be > 0");
+    } else if (c.name == "constitutive_model") {
+      if (m.model) c.fail("a material has one <constitutive_model>");
+      m.model = parse_constitutive_model(c);
+    } else if (c.name == "thermal_conductivity") {
+      m.thermal_conductivity = c.as_double();
+    } else if (c.name == "specific_heat") {
+      m.specific_heat = c.as_double();
+    } else if (c.name == "geom_object") {
+      m.sources.push_back(parse_geom_object(c, geometry));
+    } else if (c.name == "is_rigid" || c.name == "includeFlowWork" || c.name == "do_basic_damage") {
+      if (c.as_bool()) c.missing_feature("MPM material <" + c.name + "> = true");
+    } else {
+      c.missing_feature("MPM material property <" + c.name + ">");
+    }
+  }
+  if (!m.model) mat.fail("an MPM material needs a <constitutive_model>");
+  if (!mat.has_child("density")) mat.fail("an MPM material needs a <density>");
+  if (!mat.has_child("thermal_conductivity")) mat.fail("an MPM material needs a <thermal_conductivity>");
+  if (!mat.has_child("specific_heat")) mat.fail("an MPM material needs a <specific_heat>");
+  if (m.sources.empty()) mat.fail("an MPM material needs at least one <geom_object>");
+  return m;
+}
+
+void check_contact(const DeckNode& contact) {
+  const DeckNode& type = contact.require_child("type");
+  if (type.text == "null") return;  // no interaction: each material on its own grid field
+  static const char* known[] = {"single_velocity", "rigid", "specified", "specified_velocity", "friction",
+                                "friction_bard", "friction_LR", "approach"};
+  for (const char* k : known)
+    if (type.text == k) type.missing_feature("MPM contact type '" + type.text + "' (implemented: null)");
+  type.fail("unknown MPM contact type '" + type.text + "'");
+}
+
+}  // namespace
+
+std::unique_ptr<MpmComponent> make_mpm_component(const Deck& deck) {
+  const DeckNode& root = deck.root;
+  MpmSetup setup;
+  const DeckNode& grid_node = root.require_child("Grid");
+  setup.grid = make_grid(grid_node);
+  if ((setup.grid.extra_cells.array() != 0).any())
+    grid_node.missing_feature("MPM with extraCells != 0 (boundary nodes in extra cells)");
+  if ((setup.grid.periodic.array() != 0).any()) grid_node.missing_feature("MPM with periodic boundaries");
+
+  setup.flags = parse_mpm_flags(root.child("MPM"));
+  if (const DeckNode* pc = root.child("PhysicalConstants")) setup.gravity = pc->get_vec3("gravity", Vec3::Zero());
+
+  const DeckNode& props = root.require_child("MaterialProperties");
+  const DeckNode& mpm = props.require_child("MPM");
+  GeometryRegistry geometry;
+  for (const DeckNode& c : mpm.children) {
+    if (c.name == "material") {
+      setup.materials.push_back(parse_material(c, int(setup.materials.size()), geometry));
+    } else if (c.name == "contact") {
+      check_contact(c);
+    } else {
+      c.missing_feature("<MaterialProperties><MPM><" + c.name + ">");
+    }
+  }
+  if (setup.materials.empty()) mpm.fail("<MaterialProperties><MPM> has no <material>");
+  for (MpmMaterial& m : setup.materials)
+    m.bcs = parse_grid_boundary_conditions(grid_node.child("BoundaryConditions"), m.index);
+  return std::make_unique<MpmComponent>(std::move(setup));
+}
+
+}  // namespace tephra

@@ -1,0 +1,107 @@
+#include "mpm/MpmFlags.h"
+
+#include <map>
+#include <string>
+
+#include "core/deck/DeckNode.h"
+
+namespace tephra {
+
+namespace {
+
+// Flags whose value cannot change what this slice computes (output-only
+// flags, thermal flags while no implemented model depends on temperature,
+// limits that only act on states the run stops on anyway). Accepted with any
+// valid value.
+const char* const kNoEffect[] = {
+    "withColor", "boundary_traction_faces", "computeScaleFactor", "computeNodalHeatFlux",
+    "DoExplicitHeatConduction", "DoTransientImplicitHeatConduction", "DoThermalExpansion",
+    "do_contact_friction_heating", "interpolateParticleTempToGridEveryStep", "testForNegTemps_mpm",
+    "minimum_particle_mass", "maximum_particle_velocity", "min_grid_level", "max_grid_level",
+    "artificial_viscosity_coeff1", "artificial_viscosity_coeff2", "CanAddMPMMaterial",
+};
+
+// Flags that change the physics, with Vaango's default (MPMFlags). Accepted
+// only with the default value.
+const std::map<std::string, std::string>& physics_defaults() {
+  static const std::map<std::string, std::string> table = {
+      {"time_integrator", "explicit"},
+      {"interpolator", "linear"},
+      {"axisymmetric", "false"},
+      {"artificial_damping_coeff", "0"},
+      {"artificial_viscosity", "false"},
+      {"artificial_viscosity_heating", "false"},
+      {"use_load_curves", "false"},
+      {"exactDeformation", "false"},
+      {"create_new_particles", "false"},
+      {"manual_new_material", "false"},
+      {"DoImplicitHeatConduction", "false"},
+      {"do_grid_reset", "true"},
+      {"DoPressureStabilization", "false"},
+      {"UseGradientEnhancedVelocityProjection", "false"},
+      {"initialize_stress_using_body_force", "false"},
+      {"UsePrescribedDeformation", "false"},
+      {"InsertParticles", "false"},
+      {"minimum_mass_for_acc", "0"},
+      {"use_CBDI_boundary_condition", "false"},
+      {"AMR", "false"},
+  };
+  return table;
+}
+
+// True when `text` denotes the same value as the default `def` (booleans and
+// numbers compared by value, anything else as text).
+bool equals_default(const std::string& text, const std::string& def) {
+  if (auto b = parse_bool(def)) {
+    auto t = parse_bool(text);
+    return t && *t == *b;
+  }
+  if (auto d = parse_double(def)) {
+    auto t = parse_double(text);
+    return t && *t == *d;
+  }
+  return text == def;
+}
+
+}  // namespace
+
+MpmFlags parse_mpm_flags(const DeckNode* mpm) {
+  MpmFlags flags;
+  if (!mpm) return flags;
+  for (const DeckNode& c : mpm->children) {
+    bool no_effect = false;
+    for (const char* n : kNoEffect) no_effect = no_effect || c.name == n;
+    if (no_effect) continue;
+
+    if (c.name == "time_integrator") {
+      if (c.text == "explicit") continue;
+      if (c.text == "implicit" || c.text == "fracture")
+        c.missing_feature("MPM time_integrator '" + c.text + "' (only explicit is implemented)");
+      c.fail("time_integrator must be explicit, implicit or fracture, not '" + c.text + "'");
+    }
+    if (c.name == "interpolator") {
+      if (c.text == "linear") continue;
+      static const char* known[] = {"gimp", "cpdi", "cpti", "3rdorderBS", "4thorderBS", "fast_cpdi",
+                                    "axisym_cpdi", "axisym_linear", "axisym_gimp"};
+      for (const char* k : known)
+        if (c.text == k) c.missing_feature("MPM interpolator '" + c.text + "' (only linear is implemented)");
+      c.fail("unknown MPM interpolator '" + c.text + "'");
+    }
+    if (c.name == "erosion" || c.name == "deformation_gradient") {
+      // <erosion algorithm="none"/>, <deformation_gradient algorithm="first_order"/>
+      const std::string def = c.name == "erosion" ? "none" : "first_order";
+      const std::string alg = c.attribute("algorithm").value_or(def);
+      if (alg != def) c.missing_feature("MPM " + c.name + " algorithm '" + alg + "'");
+      continue;
+    }
+    auto it = physics_defaults().find(c.name);
+    if (it == physics_defaults().end())
+      c.missing_feature("MPM flag <" + c.name + ">");
+    if (!equals_default(c.text, it->second))
+      c.missing_feature("MPM flag <" + c.name + "> = '" + c.text + "' (only the default '" + it->second +
+                        "' is implemented)");
+  }
+  return flags;
+}
+
+}  // namespace tephra

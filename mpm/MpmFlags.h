@@ -1,0 +1,20 @@
+#pragma once
+// The <MPM> flags block. Only explicit time integration with linear shape
+// functions is implemented; every other flag must either leave the physics
+// of what is implemented unchanged or hold Vaango's default value. Anything
+// else is a MissingFeature naming the flag (never silently ignored).
+namespace tephra {
+
+class DeckNode;
+
+struct MpmFlags {
+  // Nothing to store yet: explicit + linear are the only accepted values.
+  // Kept as a struct so later slices (GIMP, damping, ...) add fields here.
+  bool explicit_integrator = true;
+  bool linear_interpolator = true;
+};
+
+// Reads <MPM> (may be null: all defaults).
+MpmFlags parse_mpm_flags(const DeckNode* mpm);
+
+}  // namespace tephra

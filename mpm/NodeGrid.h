@@ -1,0 +1,46 @@
+#pragma once
+// Node-centred arrays of one MPM material for one step (the `_NC` fields).
+// Node (i,j,k), i = 0..n-1, sits at origin + (i,j,k) h; index i fastest.
+#include <cstddef>
+#include <vector>
+
+#include "core/base/Types.h"
+
+namespace tephra {
+
+struct NodeGrid {
+  Vec3 origin = Vec3::Zero();  // position of node (0,0,0)
+  Vec3 h = Vec3::Ones();       // node spacing (the cell size)
+  IntVec3 n = IntVec3::Ones(); // nodes per direction
+
+  std::vector<double> mass;            // m_g = sum m_p S_gp                      (g.mass)
+  std::vector<double> volume;          // V_g = sum V_p S_gp                      (g.volume)
+  std::vector<Vec3> velocity;          // v_g = sum m_p v_p S_gp / m_g, after BCs  (g.velocity)
+  std::vector<Vec3> velocity_star;     // v*_g = v_g + a_g dt, after BCs         (g.velocity_star)
+  std::vector<Vec3> acceleration;      // a_g = (v*_g - v_g)/dt                   (g.acceleration)
+  std::vector<Vec3> external_force;    // sum f_ext,p S_gp + sum m_p b S_gp       (g.externalforce)
+  std::vector<Vec3> internal_force;    // -sum V_p sigma_p grad S_gp               (g.internalforce)
+  std::vector<Mat3> stress;            // sum V_p sigma_p S_gp / V_g              (g.stressFS)
+
+  std::size_t count() const { return std::size_t(n[0]) * n[1] * n[2]; }
+  std::size_t index(int i, int j, int k) const {
+    return std::size_t(i) + std::size_t(n[0]) * (std::size_t(j) + std::size_t(n[1]) * k);
+  }
+  std::size_t index(const IntVec3& c) const { return index(c[0], c[1], c[2]); }
+  Vec3 position(int i, int j, int k) const { return origin + Vec3(i * h[0], j * h[1], k * h[2]); }
+
+  // Sizes every array to count() and sets it to zero (Vaango's grid reset).
+  void reset() {
+    const std::size_t c = count();
+    mass.assign(c, 0.0);
+    volume.assign(c, 0.0);
+    velocity.assign(c, Vec3::Zero());
+    velocity_star.assign(c, Vec3::Zero());
+    acceleration.assign(c, Vec3::Zero());
+    external_force.assign(c, Vec3::Zero());
+    internal_force.assign(c, Vec3::Zero());
+    stress.assign(c, Mat3::Zero());
+  }
+};
+
+}  // namespace tephra
