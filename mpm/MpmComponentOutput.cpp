@@ -97,6 +97,7 @@ std::set<std::string> MpmComponent::known_labels() const {
 }
 
 void MpmComponent::fill_output(const std::set<std::string>& labels, OutputFrame& frame) const {
+  frame.grid = &setup_.grid;
   for (const MpmMaterial& m : setup_.materials) {
     const Particles& p = m.particles;
     ParticleBlock b;

@@ -3,19 +3,28 @@
 #include <map>
 
 #include "core/base/Errors.h"
+#include "models/solid/ConstitutiveModel.h"
+#include "mpm/MpmComponent.h"
 
 namespace tephra {
 
+// SimulationComponent types of Vaango's schema. Only "mpm" runs today; the
+// others are valid input that needs a component Tephra does not have yet.
 std::unique_ptr<Component> make_component(const Deck& deck) {
   const DeckNode& sc = deck.root.require_child("SimulationComponent");
   std::string type = sc.require_attribute("type");
-  sc.missing_feature("SimulationComponent type '" + type + "'");
+  if (type == "mpm") return make_mpm_component(deck);
+  sc.missing_feature("SimulationComponent type '" + type + "' (only 'mpm' runs so far)");
 }
 
 std::vector<std::string> registered_keys(const std::string& family) {
-  static const std::map<std::string, std::vector<std::string>> families = {
-      {"SimulationComponent", {}}, {"constitutive_model", {}}, {"EOS", {}},
-      {"Model", {}},               {"contact", {}},            {"interpolator", {}},
+  static const std::map<std::string, std::vector<std::string> (*)()> families = {
+      {"SimulationComponent", [] { return std::vector<std::string>{"mpm"}; }},
+      {"constitutive_model", [] { return constitutive_model_types(); }},
+      {"EOS", [] { return std::vector<std::string>{}; }},
+      {"Model", [] { return std::vector<std::string>{}; }},
+      {"contact", [] { return mpm_contact_types(); }},
+      {"interpolator", [] { return mpm_interpolators(); }},
   };
   auto it = families.find(family);
   if (it == families.end()) {
@@ -23,7 +32,7 @@ std::vector<std::string> registered_keys(const std::string& family) {
     for (const auto& [k, v] : families) known += " " + k;
     throw UsageError("unknown family '" + family + "'; families:" + known);
   }
-  return it->second;
+  return it->second();
 }
 
 }  // namespace tephra
