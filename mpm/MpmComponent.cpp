@@ -31,22 +31,30 @@ void MpmComponent::initialize() {
     update_stress(m, 0);   // sigma(F = I) = 0, and the initial wave speeds
     project_to_grid(m, 0, "initialize");  // g.* fields of the initial state
   }
+  // The first step's size from the initial state (Vaango: the constitutive
+  // model's computeStableTimestep at initialization, c(F = I) and v_0).
+  stable_dt_ = std::numeric_limits<double>::infinity();
+  for (const MpmMaterial& m : setup_.materials) stable_dt_ = std::min(stable_dt_, material_stable_timestep(m));
 }
 
-// Vaango's explicit rule (CompNeoHook::computeStressTensor): per direction d,
-// dt = min_p h_d / (c_p + |v_p,d|), c_p the dilatational wave speed of the
-// particle's current state. Here c_p is from the last stress update (J_{n+1})
-// and v_p the current velocity v_{n+1}. Infinity when there are no particles.
-double MpmComponent::stable_timestep() const {
+// Vaango's explicit rule (UCNH::computeStressTensor, called by SerialMPM's
+// computeStressTensor task): the step size is a by-product of the stress
+// update of step n, evaluated from the NEW stress state and the OLD particle
+// velocity, and used (times timestep_multiplier) for step n+1:
+//   dt = min_d h_d / max_p (c_p + |v_p,d|),
+// c_p = c(F_{n+1}) the dilatational wave speed of the model, v_p = v_n the
+// velocity the particle carried into step n (SerialMPM updates it only later,
+// in interpolateToParticlesAndUpdate). Infinity when there are no particles.
+double MpmComponent::material_stable_timestep(const MpmMaterial& m) const {
   double dt = std::numeric_limits<double>::infinity();
-  for (const MpmMaterial& m : setup_.materials) {
-    const Particles& p = m.particles;
-    for (std::size_t i = 0; i < p.size(); ++i)
-      for (int d = 0; d < 3; ++d)
-        dt = std::min(dt, setup_.grid.dx[d] / (p.wave_speed[i] + std::abs(p.v[i][d])));
-  }
+  const Particles& p = m.particles;
+  for (std::size_t i = 0; i < p.size(); ++i)
+    for (int d = 0; d < 3; ++d) dt = std::min(dt, setup_.grid.dx[d] / (p.wave_speed[i] + std::abs(p.v[i][d])));
   return dt;
 }
+
+// The step size computed by the last stress update (initialize() or advance()).
+double MpmComponent::stable_timestep() const { return stable_dt_; }
 
 void MpmComponent::fail_particle(const MpmMaterial& m, std::size_t i, int step, const std::string& phase,
                                  const std::string& what) const {
@@ -108,6 +116,8 @@ void MpmComponent::advance_material(MpmMaterial& m, double dt, int step) {
       p.F[i] = (Mat3::Identity() + dt * m.L[i]) * p.F[i];  // F_{n+1} = (I + dt l) F_n  (eq. 1.74-1.75)
   }
   update_stress(m, step);
+  // dt of the next step from c(F_{n+1}) and v_n (before the particle update).
+  stable_dt_ = std::min(stable_dt_, material_stable_timestep(m));
   {
     PhaseTimers::Scope t(phase_timers(), "MPM: interpolate to particles and update");
     grid_to_particles(m.stencils, m.grid, dt, p);       // v_p += dt a, x_p += dt v*
@@ -123,6 +133,7 @@ void MpmComponent::advance_material(MpmMaterial& m, double dt, int step) {
 }
 
 void MpmComponent::advance(double /*t*/, double dt, int step) {
+  stable_dt_ = std::numeric_limits<double>::infinity();
   for (MpmMaterial& m : setup_.materials) advance_material(m, dt, step);
 }
 

@@ -2,6 +2,7 @@
 // The explicit MPM component (update-stress-last, linear shape functions,
 // null contact: each material moves on its own grid field). See advance() in
 // MpmComponent.cpp for the step, one named phase per line.
+#include <limits>
 #include <memory>
 #include <string>
 #include <vector>
@@ -62,11 +63,15 @@ class MpmComponent final : public Component {
 
  private:
   void advance_material(MpmMaterial& m, double dt, int step);
+  double material_stable_timestep(const MpmMaterial& m) const;
   void project_to_grid(MpmMaterial& m, int step, const char* phase);
   void update_stress(MpmMaterial& m, int step);
   [[noreturn]] void fail_particle(const MpmMaterial& m, std::size_t i, int step, const std::string& phase,
                                   const std::string& what) const;
   MpmSetup setup_;
+  // Stable step for the next advance(), set by the last stress update from
+  // c(F_{n+1}) and v_n (Vaango's order); part of the restart state.
+  double stable_dt_ = std::numeric_limits<double>::infinity();
 };
 
 // Reads the MPM parts of the deck (<MPM>, <PhysicalConstants>, <MaterialProperties><MPM>,

@@ -171,6 +171,7 @@ void MpmComponent::save_state(StateArchive& a) const {
     for_each_column(m.particles, m.grid, [&](const char* name, const auto& col) { a.put(pre + name, flatten(col)); });
     a.put(pre + "id", std::vector<long long>(m.particles.id));
   }
+  a.put_scalar("mpm.stable_dt", stable_dt_);
 }
 
 void MpmComponent::load_state(const StateArchive& a) {
@@ -187,6 +188,7 @@ void MpmComponent::load_state(const StateArchive& a) {
     if (!ok) throw RuntimeFailure("checkpoint arrays of MPM material " + std::to_string(m.index) +
                                   " have inconsistent sizes");
   }
+  stable_dt_ = a.scalar("mpm.stable_dt");
 }
 
 }  // namespace tephra

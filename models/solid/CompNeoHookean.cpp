@@ -24,9 +24,13 @@ SolidPointResult comp_neo_hookean_point(const Eigen::Matrix3d& F, double density
   r.stress = (0.5 * K * (J - 1.0 / J)) * I + (G / J) * devBbar;
   // W = K/2 [ (J^2-1)/2 - ln J ] + G/2 (tr Bbar - 3), per reference volume.
   r.energy_density = 0.5 * K * (0.5 * (J * J - 1.0) - std::log(J)) + 0.5 * G * (trBbar - 3.0);
-  // Dilatational wave speed in the current configuration (rho = rho0/J).
+  // Dilatational wave speed in the current configuration, as Vaango's UCNH
+  // (the class behind "comp_neo_hook") evaluates it from its default
+  // HyperElasticEOS: c^2 = (K_t + 4G/3) / rho, rho = rho0/J, with the tangent
+  // bulk modulus K_t = dp/dJ = K/2 (1 + 1/J^2) (= K at J = 1).
   const double rho = density0 / J;
-  r.wave_speed = std::sqrt((K + 4.0 * G / 3.0) / rho);
+  const double K_t = 0.5 * K * (1.0 + 1.0 / (J * J));
+  r.wave_speed = std::sqrt((K_t + 4.0 * G / 3.0) / rho);
   return r;
 }
 

@@ -11,7 +11,9 @@
 // The stress is the one Vaango's CompNeoHook::computeStressTensor evaluates
 // (p = 0.5 K (J - 1/J), deviatoric part = G dev(Bbar)/J), and W is the energy
 // density it sums into StrainEnergy (times the reference volume).
-// Wave speed (as Vaango): c = sqrt((K + 4G/3) / rho), rho = rho0 / J the current density.
+// Wave speed (as Vaango's UCNH, the class behind "comp_neo_hook", with its default
+// HyperElasticEOS): c = sqrt((K_t + 4G/3) / rho), rho = rho0 / J the current density,
+// K_t = dp/dJ = K/2 (1 + 1/J^2) the tangent bulk modulus (K at J = 1).
 // Small-strain limit: sigma -> K tr(eps) I + 2G dev(eps) (linear elasticity).
 #include <Eigen/Core>
 
