@@ -4,6 +4,7 @@
 #   make build  build only; the executable is build/bin/tephra
 BUILD ?= build
 JOBS  ?= $(shell nproc)
+MAKEFLAGS += --no-print-directory
 DECK  ?= inputs/mpm/disks.ups
 
 .PHONY: deps configure build run test clean
