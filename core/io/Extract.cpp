@@ -144,29 +144,95 @@ std::vector<size_t> select_frames(const ExtractRequest& r, const std::vector<int
   return {};
 }
 
-void extract_grid(const SavedFrame& f, const SavedGridField& g, bool material_column,
+// The (i,j,k) a request selects among the stored extent of a grid field, in
+// output order: all of them, the one holding a point, or those a line crosses.
+std::vector<IntVec3> selected_indices(const ExtractRequest& r, const Grid& grid, const SavedGridField& g) {
+  const bool node = g.field.location == GridLocation::Node;
+  const IntVec3 lo = g.first_index, hi = g.first_index + g.extent;  // hi exclusive
+  auto index_of = [&](const Vec3& x) {
+    IntVec3 ijk;
+    for (int d = 0; d < 3; ++d) {
+      const double s = (x[d] - grid.lower[d]) / grid.dx[d];
+      ijk[d] = static_cast<int>(node ? std::lround(s) : std::floor(s));
+    }
+    return ijk;
+  };
+  auto stored = [&](const IntVec3& ijk) {
+    return (ijk.array() >= lo.array()).all() && (ijk.array() < hi.array()).all();
+  };
+  std::vector<IntVec3> out;
+  if (r.point) {
+    const IntVec3 ijk = index_of(*r.point);
+    if (stored(ijk)) out.push_back(ijk);
+  } else if (r.line) {
+    // Sample the segment at a quarter of the smallest spacing: every cell
+    // (node) it passes through is hit at least once; keep first visits.
+    const Vec3 a = r.line->first, b = r.line->second;
+    const double h = grid.dx.minCoeff() / 4.0;
+    const int n = std::max(1, static_cast<int>(std::ceil((b - a).norm() / h)));
+    for (int s = 0; s <= n; ++s) {
+      const IntVec3 ijk = index_of(a + (b - a) * (double(s) / n));
+      if (stored(ijk) && (out.empty() || out.back() != ijk) &&
+          std::find(out.begin(), out.end(), ijk) == out.end())
+        out.push_back(ijk);
+    }
+  } else {
+    for (int k = lo[2]; k < hi[2]; ++k)
+      for (int j = lo[1]; j < hi[1]; ++j)
+        for (int i = lo[0]; i < hi[0]; ++i) out.emplace_back(i, j, k);
+  }
+  return out;
+}
+
+void extract_grid(const ExtractRequest& r, const SavedFrame& f, const SavedGridField& g, bool material_column,
                   std::ostream& out) {
   const FieldArray& d = g.field.data;
   const int nc = d.components;
-  size_t at = 0;
-  for (int k = 0; k < g.extent[2]; ++k)
-    for (int j = 0; j < g.extent[1]; ++j)
-      for (int i = 0; i < g.extent[0]; ++i, at += nc) {
-        const IntVec3 ijk = g.first_index + IntVec3(i, j, k);
-        const Vec3 x = g.field.location == GridLocation::Node
-                           ? f.grid.node_position(ijk[0], ijk[1], ijk[2])
-                           : f.grid.cell_center(ijk[0], ijk[1], ijk[2]);
-        out << num(f.time);
-        if (material_column) out << ',' << d.material;
-        out << ',' << ijk[0] << ',' << ijk[1] << ',' << ijk[2] << ',' << num(x[0]) << ','
-            << num(x[1]) << ',' << num(x[2]);
-        print_values(out, d.values, at, nc);
-        out << '\n';
-      }
+  for (const IntVec3& ijk : selected_indices(r, f.grid, g)) {
+    const IntVec3 o = ijk - g.first_index;
+    const size_t at = (size_t(o[2]) * g.extent[1] + o[1]) * g.extent[0] + o[0];
+    const Vec3 x = g.field.location == GridLocation::Node ? f.grid.node_position(ijk[0], ijk[1], ijk[2])
+                                                           : f.grid.cell_center(ijk[0], ijk[1], ijk[2]);
+    out << num(f.time);
+    if (material_column) out << ',' << d.material;
+    out << ',' << ijk[0] << ',' << ijk[1] << ',' << ijk[2] << ',' << num(x[0]) << ',' << num(x[1]) << ','
+        << num(x[2]);
+    print_values(out, d.values, at * nc, nc);
+    out << '\n';
+  }
 }
 
-void extract_particles(const SavedFrame& f, const SavedParticles& p, const std::string& label,
-                       bool material_column, std::ostream& out) {
+// Particle indices a request selects, in output order.
+std::vector<long long> selected_particles(const ExtractRequest& r, const SavedFrame& f, const SavedParticles& p) {
+  std::vector<long long> out;
+  const auto& x = p.block.position;
+  if (r.point) {
+    long long best = -1;
+    double best_d = 0.0;
+    for (long long n = 0; n < p.count; ++n) {
+      const double d = (x[n] - *r.point).squaredNorm();
+      if (best < 0 || d < best_d) best = n, best_d = d;
+    }
+    if (best >= 0) out.push_back(best);
+  } else if (r.line) {
+    const Vec3 a = r.line->first, b = r.line->second;
+    const double len2 = (b - a).squaredNorm();
+    const double reach = 0.5 * f.grid.dx.maxCoeff();
+    std::vector<std::pair<double, long long>> along;
+    for (long long n = 0; n < p.count; ++n) {
+      const double s = len2 > 0 ? std::clamp((x[n] - a).dot(b - a) / len2, 0.0, 1.0) : 0.0;
+      if ((x[n] - (a + s * (b - a))).norm() <= reach) along.push_back({s, n});
+    }
+    std::stable_sort(along.begin(), along.end());
+    for (const auto& [s, n] : along) out.push_back(n);
+  } else {
+    for (long long n = 0; n < p.count; ++n) out.push_back(n);
+  }
+  return out;
+}
+
+void extract_particles(const ExtractRequest& r, const SavedFrame& f, const SavedParticles& p,
+                       const std::string& label, bool material_column, std::ostream& out) {
   const std::vector<double>* values = nullptr;
   std::vector<double> xyz;
   int nc = 3;
@@ -181,7 +247,7 @@ void extract_particles(const SavedFrame& f, const SavedParticles& p, const std::
       }
   }
   if (!values) return;
-  for (long long n = 0; n < p.count; ++n) {
+  for (long long n : selected_particles(r, f, p)) {
     const Vec3& x = p.block.position[n];
     out << num(f.time);
     if (material_column) out << ',' << p.block.material;
@@ -197,8 +263,10 @@ void extract_csv(const ExtractRequest& r, std::ostream& out) {
   std::error_code ec;
   if (!fs::is_directory(r.dir, ec)) throw UsageError("'" + r.dir + "' is not an output directory");
   const std::vector<std::string> reductions = read_reduction_labels(r.dir);
-  if (std::find(reductions.begin(), reductions.end(), r.label) != reductions.end())
+  if (std::find(reductions.begin(), reductions.end(), r.label) != reductions.end()) {
+    if (r.point || r.line) throw UsageError("'" + r.label + "' is a reduction: --point and --line do not apply");
     return extract_reduction(r, out);
+  }
 
   std::vector<int> steps;
   std::vector<std::string> paths;
@@ -232,7 +300,7 @@ void extract_csv(const ExtractRequest& r, std::ostream& out) {
             << columns(r.label, g.field.data.components) << '\n';
         header = true;
       }
-      extract_grid(f, g, material_column, out);
+      extract_grid(r, f, g, material_column, out);
     }
     for (const SavedParticles& p : f.particles) {
       if (r.material && *r.material != p.block.material) continue;
@@ -246,7 +314,7 @@ void extract_csv(const ExtractRequest& r, std::ostream& out) {
             << columns(r.label, nc) << '\n';
         header = true;
       }
-      extract_particles(f, p, r.label, material_column, out);
+      extract_particles(r, f, p, r.label, material_column, out);
     }
   }
 }

@@ -29,11 +29,12 @@ const char* kUsage =
     "  tephra --validate DECK\n"
     "  tephra --restart DIR [--checkpoint N] [--max-steps N] [--end-time T] [--threads N] [--quiet]\n"
     "  tephra --list FAMILY\n"
-    "  tephra extract DIR --var LABEL [--material M] [--step N|last | --time T | --all-times]\n";
+    "  tephra extract DIR --var LABEL [--material M] [--step N|last | --time T | --all-times]\n"
+    "                 [--point x,y,z | --line x0,y0,z0,x1,y1,z1]\n";
 
 struct Arguments {
   std::vector<std::string> positional;
-  std::optional<std::string> output, restart, list, validate, var, step, checkpoint;
+  std::optional<std::string> output, restart, list, validate, var, step, checkpoint, point, line;
   std::optional<long long> max_steps, material;
   std::optional<double> end_time, time;
   std::optional<int> threads;
@@ -67,6 +68,8 @@ Arguments parse(int argc, char** argv, int first) {
     else if (arg == "--var") a.var = value();
     else if (arg == "--step") a.step = value();
     else if (arg == "--checkpoint") a.checkpoint = value();
+    else if (arg == "--point") a.point = value();
+    else if (arg == "--line") a.line = value();
     else if (arg == "--material") a.material = to_integer(arg, value());
     else if (arg == "--max-steps") {
       a.max_steps = to_integer(arg, value());
@@ -179,6 +182,21 @@ int run_extract(const Arguments& a) {
     q.time = *a.time;
   } else if (a.all_times) {
     q.when = ExtractRequest::When::AllTimes;
+  }
+  auto numbers = [](const std::string& flag, const std::string& text, size_t count) {
+    auto v = parse_number_list(text);
+    if (!v || v->size() != count)
+      throw UsageError(flag + " expects " + std::to_string(count) + " comma-separated numbers, got '" + text + "'");
+    return *v;
+  };
+  if (a.point && a.line) throw UsageError("give --point or --line, not both");
+  if (a.point) {
+    auto v = numbers("--point", *a.point, 3);
+    q.point = Vec3(v[0], v[1], v[2]);
+  }
+  if (a.line) {
+    auto v = numbers("--line", *a.line, 6);
+    q.line = std::make_pair(Vec3(v[0], v[1], v[2]), Vec3(v[3], v[4], v[5]));
   }
   extract_csv(q, std::cout);
   return 0;
