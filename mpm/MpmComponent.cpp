@@ -1,5 +1,6 @@
 #include "mpm/MpmComponent.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -28,7 +29,17 @@ void MpmComponent::initialize() {
   for (MpmMaterial& m : setup_.materials) {
     m.particles = Particles{};
     seed_particles(setup_.grid, m.sources, m.density, m.particles, next_id);
-    update_stress(m, 0);   // sigma(F = I) = 0, and the initial wave speeds
+    // The model's history columns at their declared initial values.
+    m.particles.history.clear();
+    for (const HistoryVariable& h : m.model->history()) {
+      std::vector<double> column;
+      column.reserve(m.particles.size() * h.initial.size());
+      for (std::size_t i = 0; i < m.particles.size(); ++i) column.insert(column.end(), h.initial.begin(), h.initial.end());
+      m.particles.history.push_back(std::move(column));
+    }
+    m.F_old = m.particles.F;
+    m.L.assign(m.particles.size(), Mat3::Zero());
+    update_stress(m, 0, 0.0);  // sigma(F = I) = 0, and the initial wave speeds
     project_to_grid(m, 0, "initialize");  // g.* fields of the initial state
   }
   // The first step's size from the initial state (Vaango: the constitutive
@@ -82,8 +93,8 @@ void MpmComponent::project_to_grid(MpmMaterial& m, int step, const char* phase) 
   }
 }
 
-// sigma_{n+1}, c, W from F_{n+1} (Alg. 11); V_{n+1} = J V0 (Alg. 9).
-void MpmComponent::update_stress(MpmMaterial& m, int step) {
+// sigma_{n+1}, c, W, history from (F_n, F_{n+1}, l, sigma_n) (Alg. 11); V_{n+1} = J V0 (Alg. 9).
+void MpmComponent::update_stress(MpmMaterial& m, int step, double dt) {
   PhaseTimers::Scope t(phase_timers(), "MPM: compute stress tensor");
   Particles& p = m.particles;
   for (std::size_t i = 0; i < p.size(); ++i) {
@@ -95,8 +106,22 @@ void MpmComponent::update_stress(MpmMaterial& m, int step) {
     }
     p.volume[i] = J * p.volume0[i];
   }
-  const long bad = m.model->update({p.F, m.density}, {p.stress, p.wave_speed, p.energy_density});
-  if (bad >= 0) fail_particle(m, std::size_t(bad), step, "compute stress tensor", "non-finite stress");
+  m.plastic_work.resize(p.size());
+  m.heating.resize(p.size());
+  std::vector<std::span<double>> history(p.history.begin(), p.history.end());
+  SolidUpdateInput in;
+  in.dt = dt;
+  in.density0 = m.density;
+  in.F_old = m.F_old;
+  in.F_new = p.F;
+  in.L = m.L;
+  in.temperature = p.temperature;
+  in.stress_old = p.stress;
+  const SolidUpdateOutput out{p.stress, p.wave_speed, p.energy_density, m.plastic_work, m.heating, history};
+  const long bad = m.model->update(in, out);
+  if (bad >= 0) fail_particle(m, std::size_t(bad), step, "compute stress tensor",
+                              "constitutive model '" + m.model->type() +
+                                  "' rejected the state (non-finite stress or no real wave speed)");
 }
 
 // One explicit USL step of one material (Vaango theory manual §1.5, Alg. 2).
@@ -112,10 +137,12 @@ void MpmComponent::advance_material(MpmMaterial& m, double dt, int step) {
   {
     PhaseTimers::Scope t(phase_timers(), "MPM: compute deformation gradient");
     velocity_gradients(m.stencils, m.grid, m.L);        // l_p = sum v*_g grad S^T
+    m.F_old = p.F;
     for (std::size_t i = 0; i < p.size(); ++i)
       p.F[i] = (Mat3::Identity() + dt * m.L[i]) * p.F[i];  // F_{n+1} = (I + dt l) F_n  (eq. 1.74-1.75)
+    if (m.model->rigid()) std::fill(p.F.begin(), p.F.end(), Mat3::Identity());  // F = I (VT eq. 3.1)
   }
-  update_stress(m, step);
+  update_stress(m, step, dt);
   // dt of the next step from c(F_{n+1}) and v_n (before the particle update).
   stable_dt_ = std::min(stable_dt_, material_stable_timestep(m));
   {

@@ -34,6 +34,9 @@ struct MpmMaterial {
   NodeGrid grid;                        // this step's node fields (and g.* output)
   std::vector<LinearStencil> stencils;  // scratch of the step
   std::vector<Mat3> L;                  // velocity gradients of the step
+  std::vector<Mat3> F_old;              // F_n of the step (the model's input)
+  std::vector<double> plastic_work;     // model outputs of the step: dissipated work per V0 [J/m^3]
+  std::vector<double> heating;          //   and internal heating rate dT/dt [K/s] (no heat equation yet)
 };
 
 struct MpmSetup {
@@ -65,7 +68,7 @@ class MpmComponent final : public Component {
   void advance_material(MpmMaterial& m, double dt, int step);
   double material_stable_timestep(const MpmMaterial& m) const;
   void project_to_grid(MpmMaterial& m, int step, const char* phase);
-  void update_stress(MpmMaterial& m, int step);
+  void update_stress(MpmMaterial& m, int step, double dt);
   [[noreturn]] void fail_particle(const MpmMaterial& m, std::size_t i, int step, const std::string& phase,
                                   const std::string& what) const;
   MpmSetup setup_;

@@ -93,6 +93,8 @@ std::set<std::string> MpmComponent::known_labels() const {
   for (const char* l : kParticleLabels) s.insert(l);
   for (const char* l : kNodeLabels) s.insert(l);
   for (const char* l : kReductionLabels) s.insert(l);
+  for (const MpmMaterial& m : setup_.materials)
+    for (const HistoryVariable& h : m.model->history()) s.insert("p." + h.name);
   return s;
 }
 
@@ -114,6 +116,18 @@ void MpmComponent::fill_output(const std::set<std::string>& labels, OutputFrame&
     if (want("p.temperature")) b.fields.push_back(field("p.temperature", m.index, p.temperature));
     if (want("p.color")) b.fields.push_back(field("p.color", m.index, p.color));
     if (want("p.externalforce")) b.fields.push_back(field("p.externalforce", m.index, p.external_force));
+    // The model's history columns, p.<name>, as declared (already flat).
+    const std::vector<HistoryVariable> hist = m.model->history();
+    for (std::size_t k = 0; k < hist.size(); ++k) {
+      const std::string label = "p." + hist[k].name;
+      if (!labels.count(label)) continue;
+      FieldArray f;
+      f.label = label;
+      f.material = m.index;
+      f.components = hist[k].components;
+      f.values = p.history[k];
+      b.fields.push_back(std::move(f));
+    }
     frame.particles.push_back(std::move(b));
 
     auto node = [&](const char* label, const auto& column) {
@@ -170,6 +184,8 @@ void MpmComponent::save_state(StateArchive& a) const {
     const std::string pre = prefix(m);
     for_each_column(m.particles, m.grid, [&](const char* name, const auto& col) { a.put(pre + name, flatten(col)); });
     a.put(pre + "id", std::vector<long long>(m.particles.id));
+    const std::vector<HistoryVariable> hist = m.model->history();
+    for (std::size_t k = 0; k < hist.size(); ++k) a.put(pre + "history." + hist[k].name, m.particles.history[k]);
   }
   a.put_scalar("mpm.stable_dt", stable_dt_);
 }
@@ -185,6 +201,12 @@ void MpmComponent::load_state(const StateArchive& a) {
       if (name[0] != 'g') ok = ok && col.size() == n;
       else ok = ok && col.size() == m.grid.count();
     });
+    const std::vector<HistoryVariable> hist = m.model->history();
+    m.particles.history.assign(hist.size(), {});
+    for (std::size_t k = 0; k < hist.size(); ++k) {
+      m.particles.history[k] = a.doubles(pre + "history." + hist[k].name);
+      ok = ok && m.particles.history[k].size() == n * std::size_t(hist[k].components);
+    }
     if (!ok) throw RuntimeFailure("checkpoint arrays of MPM material " + std::to_string(m.index) +
                                   " have inconsistent sizes");
   }

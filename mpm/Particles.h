@@ -23,6 +23,11 @@ struct Particles {
   std::vector<double> wave_speed;  // dilatational wave speed [m/s] of the last stress update
   std::vector<double> energy_density; // stored energy per reference volume W(F) [J/m^3]
   std::vector<long long> id;       // unique, stable                    (p.particleID)
+  // The internal variables the material's model declares
+  // (ConstitutiveModel::history(), same order): history[k] holds
+  // components_k values per particle (saved as p.<name>). Sized by
+  // init_history() after seeding; add() leaves them alone.
+  std::vector<std::vector<double>> history;
 
   std::size_t size() const { return x.size(); }
 

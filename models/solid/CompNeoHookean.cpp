@@ -35,17 +35,33 @@ SolidPointResult comp_neo_hookean_point(const Eigen::Matrix3d& F, double density
 }
 
 long CompNeoHookean::update(const SolidUpdateInput& in, const SolidUpdateOutput& out) const {
-  const size_t n = in.F.size();
+  const size_t n = in.F_new.size();
   for (size_t i = 0; i < n; ++i) {
-    const double J = in.F[i].determinant();
+    const double J = in.F_new[i].determinant();
     if (!(J > 0.0) || !std::isfinite(J)) return static_cast<long>(i);
-    const SolidPointResult r = comp_neo_hookean_point(in.F[i], in.density0, p_);
+    const SolidPointResult r = comp_neo_hookean_point(in.F_new[i], in.density0, p_);
     if (!r.stress.allFinite()) return static_cast<long>(i);
     out.stress[i] = r.stress;
     out.wave_speed[i] = r.wave_speed;
     out.energy_density[i] = r.energy_density;
+    out.plastic_work[i] = 0.0;  // elastic: no dissipation, no internal heating
+    out.heating[i] = 0.0;
   }
   return -1;
+}
+
+std::optional<SolidEosPoint> CompNeoHookean::pressure_at_density(double rho, double density0, double) const {
+  const double K = p_.bulk_modulus;
+  SolidEosPoint e;
+  e.pressure = 0.5 * K * (rho / density0 - density0 / rho);
+  e.dp_drho = 0.5 * K * (1.0 / density0 + density0 / (rho * rho));
+  e.c2 = e.dp_drho;
+  return e;
+}
+
+std::optional<double> CompNeoHookean::density_at_pressure(double p_gauge, double density0, double) const {
+  const double q = p_gauge / p_.bulk_modulus;
+  return density0 * (q + std::sqrt(q * q + 1.0));
 }
 
 ConstitutiveModelP CompNeoHookean::create(const ModelParameters& params) {

@@ -40,6 +40,12 @@ class CompNeoHookean final : public ConstitutiveModel {
   long update(const SolidUpdateInput& in, const SolidUpdateOutput& out) const override;
   double bulk_modulus() const override { return p_.bulk_modulus; }
   double shear_modulus() const override { return p_.shear_modulus; }
+  bool hyperelastic() const override { return true; }
+  // p(rho) = -U'(J) at J = rho0/rho = K/2 (rho/rho0 - rho0/rho) (Vaango UCNH's
+  // HyperElasticEOS), dp/drho = K/2 (1/rho0 + rho0/rho^2), c^2 = dp/drho.
+  std::optional<SolidEosPoint> pressure_at_density(double rho, double density0, double T) const override;
+  // Inverse: x = rho/rho0 solves x^2 - (2p/K) x - 1 = 0, x = p/K + sqrt((p/K)^2 + 1).
+  std::optional<double> density_at_pressure(double p_gauge, double density0, double T) const override;
   const CompNeoHookeanParams& params() const { return p_; }
 
  private:

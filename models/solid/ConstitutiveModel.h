@@ -1,9 +1,19 @@
 #pragma once
-// The interface of a solid constitutive model: a point function
-//   (F_{n+1}, reference density, state) -> (Cauchy stress, wave speed, energy)
-// applied by the model to a span of points (virtual dispatch once per material
-// per step, DESIGN.md §2.3). No particle, grid or I/O type appears here.
+// The interface of a solid constitutive model (DESIGN.md §2.1): a point function
+// over an explicit state,
+//   (F_n, F_{n+1}, l, dt, T, sigma_n, history_n)
+//       -> (sigma_{n+1}, history_{n+1}, wave speed, stored energy, plastic work, heating),
+// applied by the model to a span of points: virtual dispatch once per material
+// per step (§2.3), the concrete loop inside the model. No particle, grid, MPI or
+// I/O type appears here; the driver owns storage, the loop over materials, the
+// stable time step and the energy sums.
+//
+// History: a model declares its internal variables (name, component count,
+// initial value); the driver stores each as one flat SoA column of doubles
+// (components values per point, row-major for tensors), saves it in
+// checkpoints and can write it as the output label "p.<name>".
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -14,36 +24,90 @@ namespace tephra {
 
 class ModelParameters;
 
-// One point's result.
+// One point's result of a point function (what unit tests call).
 struct SolidPointResult {
-  Eigen::Matrix3d stress;    // Cauchy stress, tension positive [Pa]
-  double wave_speed = 0.0;   // dilatational wave speed in the current state [m/s]
-  double energy_density = 0; // stored energy per unit REFERENCE volume W(F) [J/m^3]
+  Eigen::Matrix3d stress;     // Cauchy stress, tension positive [Pa]
+  double wave_speed = 0.0;    // dilatational wave speed in the current state [m/s]
+  double energy_density = 0;  // stored energy per unit REFERENCE volume [J/m^3]
 };
 
-// The inputs of a span of points (all spans have the same length).
+// One internal variable a model carries from step to step.
+struct HistoryVariable {
+  std::string name;             // output label "p.<name>" (Vaango's label where it has one)
+  int components = 1;           // 1 (scalar), 3 (vector) or 9 (tensor, row-major), as OutputFrame
+  std::vector<double> initial;  // value at the reference state, `components` entries
+  std::string description;      // meaning and unit, for documentation and --list
+};
+
+// The driver's storage of the declared history: columns[k] belongs to
+// history()[k] and holds components * n values for the n points of the span.
+// The update reads the state at t_n and overwrites it with the state at t_{n+1}.
+using HistoryColumns = std::span<const std::span<double>>;
+
+// The inputs of a span of n points. Every span has length n, except where noted.
 struct SolidUpdateInput {
-  std::span<const Eigen::Matrix3d> F;  // deformation gradient at t_{n+1}
-  double density0 = 0.0;               // reference (initial) mass density [kg/m^3]
+  double dt = 0.0;                           // step size [s]; 0 at initialization
+  double density0 = 0.0;                     // reference mass density rho_0 [kg/m^3]
+  std::span<const Eigen::Matrix3d> F_old;    // deformation gradient at t_n
+  std::span<const Eigen::Matrix3d> F_new;    // deformation gradient at t_{n+1}
+  std::span<const Eigen::Matrix3d> L;        // velocity gradient of the step, F_{n+1} = (I + dt L) F_n
+  std::span<const double> temperature;       // T at t_{n+1} [K]
+  std::span<const Eigen::Matrix3d> stress_old;  // Cauchy stress at t_n (may alias out.stress)
 };
 
 struct SolidUpdateOutput {
-  std::span<Eigen::Matrix3d> stress;
-  std::span<double> wave_speed;
-  std::span<double> energy_density;
+  std::span<Eigen::Matrix3d> stress;  // Cauchy stress at t_{n+1}, tension positive [Pa]
+  std::span<double> wave_speed;       // dilatational wave speed at t_{n+1} [m/s] (0: no limit)
+  std::span<double> energy_density;   // stored elastic energy per REFERENCE volume at t_{n+1} [J/m^3]
+  std::span<double> plastic_work;     // dissipated work per reference volume during the step [J/m^3]
+  std::span<double> heating;          // internal heating rate dT/dt of the step [K/s] (Vaango pdTdt)
+  HistoryColumns history;             // in/out, one column per history() entry
+};
+
+// Pressure response for MPMICE (Vaango computePressEOSCM): gauge pressure,
+// positive in compression, at mass density rho.
+struct SolidEosPoint {
+  double pressure = 0.0;  // p - p_ref [Pa]
+  double dp_drho = 0.0;   // [Pa m^3/kg]
+  double c2 = 0.0;        // sound speed squared [m^2/s^2]
 };
 
 class ConstitutiveModel {
  public:
   virtual ~ConstitutiveModel() = default;
   virtual std::string type() const = 0;  // Vaango's type attribute, e.g. "comp_neo_hook"
+
   // Updates every point of the span. Returns the index of the first point whose
-  // state is inadmissible (J <= 0 or a non-finite result), or -1 when all are fine;
-  // the driver turns that into a NumericalFailure naming the particle.
+  // state is inadmissible (J <= 0 or a non-finite result), or -1 when all are
+  // fine; the driver turns that into a NumericalFailure naming the particle.
   virtual long update(const SolidUpdateInput& in, const SolidUpdateOutput& out) const = 0;
-  // Small-strain moduli (for time-step estimates and tests).
+
+  // The internal variables this model carries (none by default).
+  virtual std::vector<HistoryVariable> history() const { return {}; }
+
+  // Small-strain moduli (time-step estimates, contact, tests).
   virtual double bulk_modulus() const = 0;
   virtual double shear_modulus() const = 0;
+
+  // True when sigma depends on F_{n+1} only and energy_density is W(F) with
+  // sigma = (1/J) dW/dF F^T (VT eq. 4.3); contract tests check dW/dF then.
+  virtual bool hyperelastic() const { return false; }
+
+  // True for a rigid body (VT eq. 3.1): the driver keeps F = I (and so the
+  // reference volume); the particles only move with the grid velocity.
+  virtual bool rigid() const { return false; }
+
+  // ---- hooks MPMICE needs (Vaango computePressEOSCM / computeRhoMicroCM).
+  // std::nullopt: not provided by this model; the caller reports MissingFeature.
+  virtual std::optional<SolidEosPoint> pressure_at_density(double /*rho*/, double /*density0*/,
+                                                           double /*T*/) const {
+    return std::nullopt;
+  }
+  // The inverse: rho such that pressure_at_density(rho) = p_gauge.
+  virtual std::optional<double> density_at_pressure(double /*p_gauge*/, double /*density0*/,
+                                                    double /*T*/) const {
+    return std::nullopt;
+  }
 };
 
 using ConstitutiveModelP = std::shared_ptr<const ConstitutiveModel>;

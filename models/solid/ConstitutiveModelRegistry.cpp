@@ -4,8 +4,11 @@
 #include <map>
 
 #include "models/ModelParameters.h"
+#include "models/solid/CompMooneyRivlin.h"
 #include "models/solid/CompNeoHookean.h"
 #include "models/solid/ConstitutiveModel.h"
+#include "models/solid/HypoElastic.h"
+#include "models/solid/RigidMaterial.h"
 
 namespace tephra {
 
@@ -14,7 +17,10 @@ using Creator = std::function<ConstitutiveModelP(const ModelParameters&)>;
 
 const std::map<std::string, Creator>& creators() {
   static const std::map<std::string, Creator> table = {
+      {"comp_mooney_rivlin", &CompMooneyRivlin::create},
       {"comp_neo_hook", &CompNeoHookean::create},
+      {"hypo_elastic", &HypoElastic::create},
+      {"rigid", &RigidMaterial::create},
   };
   return table;
 }

@@ -151,7 +151,8 @@ TEST(ModelCompNeoHook, RegistryCreatesAndValidates) {
   EXPECT_EQ(m->bulk_modulus(), 833.3);
   EXPECT_EQ(m->shear_modulus(), 384.6);
   EXPECT_EQ(create_constitutive_model("no_such_model", p), nullptr);
-  EXPECT_EQ(constitutive_model_types(), std::vector<std::string>{"comp_neo_hook"});
+  EXPECT_EQ(constitutive_model_types(),
+            (std::vector<std::string>{"comp_mooney_rivlin", "comp_neo_hook", "hypo_elastic", "rigid"}));
   p.values["shear_modulus"] = -1;
   EXPECT_THROW(create_constitutive_model("comp_neo_hook", p), std::invalid_argument);
   p.values["shear_modulus"] = 384.6;
@@ -163,12 +164,37 @@ TEST(ModelCompNeoHook, SpanUpdateReportsInvertedPoint) {
   CompNeoHookean m(kParams);
   std::vector<Mat3> F = {Mat3::Identity(), Mat3::Identity()};
   F[1](2, 2) = -0.5;  // J < 0
-  std::vector<Mat3> s(2);
-  std::vector<double> c(2), w(2);
-  EXPECT_EQ(m.update({F, kRho0}, {s, c, w}), 1);
+  const std::vector<Mat3> F0(2, Mat3::Identity()), L(2, Mat3::Zero());
+  std::vector<Mat3> s(2, Mat3::Zero());
+  std::vector<double> c(2), w(2), wp(2), h(2), T(2, 300.0);
+  SolidUpdateInput in;
+  in.density0 = kRho0;
+  in.F_old = F0;
+  in.F_new = F;
+  in.L = L;
+  in.temperature = T;
+  in.stress_old = s;
+  const SolidUpdateOutput out{s, c, w, wp, h, {}};
+  EXPECT_EQ(m.update(in, out), 1);
   F[1](2, 2) = 1.2;
-  EXPECT_EQ(m.update({F, kRho0}, {s, c, w}), -1);
+  EXPECT_EQ(m.update(in, out), -1);
   EXPECT_EQ(s[1], comp_neo_hookean_point(F[1], kRho0, kParams).stress);
+}
+
+TEST(ModelCompNeoHook, PressureHooksAreInverseAndDifferentiable) {
+  // p(rho) = K/2 (rho/rho0 - rho0/rho) = -(trace sigma)/3 at F = (rho0/rho)^{1/3} I,
+  // dp/drho by central differences, rho(p(rho)) = rho.
+  CompNeoHookean m(kParams);
+  for (double rho : {800.0, 1000.0, 1300.0}) {
+    const SolidEosPoint e = *m.pressure_at_density(rho, kRho0, 300.0);
+    const Mat3 F = std::cbrt(kRho0 / rho) * Mat3::Identity();
+    EXPECT_NEAR(e.pressure, -comp_neo_hookean_point(F, kRho0, kParams).stress.trace() / 3, 1e-12 * 833.3);
+    const double h = 1e-3;
+    const double fd = (m.pressure_at_density(rho + h, kRho0, 300.0)->pressure -
+                       m.pressure_at_density(rho - h, kRho0, 300.0)->pressure) / (2 * h);
+    EXPECT_NEAR(e.dp_drho, fd, 1e-8 * e.dp_drho);
+    EXPECT_NEAR(*m.density_at_pressure(e.pressure, kRho0, 300.0), rho, 1e-12 * rho);
+  }
 }
 
 }  // namespace

@@ -1,0 +1,76 @@
+#include "models/solid/HypoElastic.h"
+
+#include <cmath>
+#include <limits>
+
+#include <Eigen/LU>
+
+#include "models/ModelParameters.h"
+#include "models/solid/Kinematics.h"
+
+namespace tephra {
+
+SolidPointResult hypo_elastic_point(const Eigen::Matrix3d& F_old, const Eigen::Matrix3d& F_new,
+                                    const Eigen::Matrix3d& stress_old, double density0,
+                                    const HypoElasticParams& p) {
+  const Eigen::Matrix3d I = Eigen::Matrix3d::Identity();
+  const PolarDecomposition a = polar_decomposition(F_old), b = polar_decomposition(F_new);
+  // Unrotated strain increment: midpoint rule for d_hat = sym(U_dot U^{-1}).
+  const Eigen::Matrix3d G = (b.U - a.U) * (0.5 * (a.U + b.U)).inverse();
+  const Eigen::Matrix3d de = 0.5 * (G + G.transpose());
+  // VT eq. 4.2 in the unrotated frame.
+  const Eigen::Matrix3d tau =
+      a.R.transpose() * stress_old * a.R + ((p.K - 2.0 * p.G / 3.0) * de.trace()) * I + (2.0 * p.G) * de;
+  SolidPointResult r;
+  r.stress = b.R * tau * b.R.transpose();
+  r.stress = 0.5 * (r.stress + r.stress.transpose());  // remove round-off asymmetry
+  const double J = F_new.determinant();
+  const double pr = r.stress.trace() / 3.0;
+  const Eigen::Matrix3d s = r.stress - pr * I;
+  r.energy_density = J * (pr * pr / (2.0 * p.K) + s.squaredNorm() / (4.0 * p.G));
+  r.wave_speed = std::sqrt((p.K + 4.0 * p.G / 3.0) * J / density0);
+  return r;
+}
+
+long HypoElastic::update(const SolidUpdateInput& in, const SolidUpdateOutput& out) const {
+  const size_t n = in.F_new.size();
+  for (size_t i = 0; i < n; ++i) {
+    const double J0 = in.F_old[i].determinant(), J = in.F_new[i].determinant();
+    if (!(J0 > 0.0) || !(J > 0.0) || !std::isfinite(J) || !std::isfinite(J0)) return static_cast<long>(i);
+    const SolidPointResult r = hypo_elastic_point(in.F_old[i], in.F_new[i], in.stress_old[i], in.density0, p_);
+    if (!r.stress.allFinite()) return static_cast<long>(i);
+    out.stress[i] = r.stress;
+    out.wave_speed[i] = r.wave_speed;
+    out.energy_density[i] = r.energy_density;
+    out.plastic_work[i] = 0.0;
+    out.heating[i] = 0.0;
+  }
+  return -1;
+}
+
+std::optional<SolidEosPoint> HypoElastic::pressure_at_density(double rho, double density0, double) const {
+  SolidEosPoint e;
+  e.pressure = p_.K * (1.0 - density0 / rho);
+  e.dp_drho = p_.K * density0 / (rho * rho);
+  e.c2 = p_.K / rho;
+  return e;
+}
+
+std::optional<double> HypoElastic::density_at_pressure(double p_gauge, double density0, double) const {
+  const double x = 1.0 - p_gauge / p_.K;
+  if (!(x > 0.0)) return std::numeric_limits<double>::infinity();
+  return density0 / x;
+}
+
+ConstitutiveModelP HypoElastic::create(const ModelParameters& params) {
+  HypoElasticParams p;
+  p.G = params.get_double("G");
+  p.K = params.get_double("K");
+  if (!(p.G > 0.0)) params.fail("G", "G (shear modulus) must be > 0");
+  if (!(p.K > 0.0)) params.fail("K", "K (bulk modulus) must be > 0");
+  if (params.get_double("alpha", 0.0) != 0.0)
+    params.missing_feature("alpha", "hypo_elastic thermal stress (alpha != 0)");
+  return std::make_shared<HypoElastic>(p);
+}
+
+}  // namespace tephra

@@ -1,0 +1,105 @@
+#pragma once
+// Test helpers for solid models: parameters from a map (failures throw
+// std::invalid_argument / std::logic_error instead of deck errors), sample
+// parameters for every registered model, and a one-point driver over the
+// span interface (header-only; tests only).
+#include <map>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+#include <Eigen/LU>
+
+#include "models/ModelParameters.h"
+#include "models/solid/ConstitutiveModel.h"
+
+namespace tephra::test {
+
+class MapModelParameters final : public ModelParameters {
+ public:
+  std::map<std::string, double> values;
+  MapModelParameters() = default;
+  explicit MapModelParameters(std::map<std::string, double> v) : values(std::move(v)) {}
+  bool has(const std::string& n) const override { return values.count(n) > 0; }
+  double get_double(const std::string& n) const override {
+    if (!has(n)) throw std::invalid_argument("missing " + n);
+    return values.at(n);
+  }
+  double get_double(const std::string& n, double f) const override { return has(n) ? values.at(n) : f; }
+  bool get_bool(const std::string& n, bool f) const override { return has(n) ? values.at(n) != 0 : f; }
+  [[noreturn]] void fail(const std::string& n, const std::string& m) const override {
+    throw std::invalid_argument(n + ": " + m);
+  }
+  [[noreturn]] void missing_feature(const std::string& n, const std::string& m) const override {
+    throw std::logic_error(n + ": " + m);
+  }
+};
+
+// Parameters of every registered model for the contract tests (a new model
+// must add a row: ContractTable.EveryRegisteredModelHasSampleParameters).
+// Steel-like moduli (K = 8 GPa, G = 3 GPa); the contracts use relative tolerances.
+inline const std::map<std::string, std::map<std::string, double>>& sample_solid_parameters() {
+  static const std::map<std::string, std::map<std::string, double>> table = {
+      {"comp_neo_hook", {{"bulk_modulus", 8.0e9}, {"shear_modulus", 3.0e9}}},
+      {"hypo_elastic", {{"K", 8.0e9}, {"G", 3.0e9}}},
+      // Vaango's const_test_cmr.ups: G = 2 (C1 + C2) = 2.4e5, nu = 0.49.
+      {"comp_mooney_rivlin", {{"he_constant_1", 1.0e5}, {"he_constant_2", 2.0e4}, {"he_PR", 0.49}}},
+      {"rigid", {}},
+  };
+  return table;
+}
+
+inline ConstitutiveModelP make_sample_model(const std::string& type) {
+  MapModelParameters p(sample_solid_parameters().at(type));
+  return create_constitutive_model(type, p);
+}
+
+// One material point carried through steps of the span interface.
+struct PointState {
+  Eigen::Matrix3d F = Eigen::Matrix3d::Identity();
+  Eigen::Matrix3d stress = Eigen::Matrix3d::Zero();
+  double temperature = 300.0;
+  std::vector<std::vector<double>> history;
+  double wave_speed = 0, energy_density = 0, plastic_work = 0, heating = 0;
+
+  explicit PointState(const ConstitutiveModel& m) {
+    for (const HistoryVariable& h : m.history()) history.push_back(h.initial);
+  }
+};
+
+// One step F_n = s.F -> F_new with l = (F_new F_n^{-1} - I)/dt. Returns the
+// model's return code (-1 on success); on success s holds the new state.
+inline long step_point(const ConstitutiveModel& m, double density0, PointState& s, const Eigen::Matrix3d& F_new,
+                       double dt) {
+  const Eigen::Matrix3d F_old = s.F;
+  const Eigen::Matrix3d L = dt > 0 ? Eigen::Matrix3d((F_new * F_old.inverse() - Eigen::Matrix3d::Identity()) / dt)
+                                   : Eigen::Matrix3d::Zero();
+  const Eigen::Matrix3d stress_old = s.stress;
+  std::vector<std::span<double>> hist(s.history.begin(), s.history.end());
+  SolidUpdateInput in;
+  in.dt = dt;
+  in.density0 = density0;
+  in.F_old = {&F_old, 1};
+  in.F_new = {&F_new, 1};
+  in.L = {&L, 1};
+  in.temperature = {&s.temperature, 1};
+  in.stress_old = {&stress_old, 1};
+  const SolidUpdateOutput out{{&s.stress, 1},       {&s.wave_speed, 1}, {&s.energy_density, 1},
+                              {&s.plastic_work, 1}, {&s.heating, 1},    hist};
+  const long r = m.update(in, out);
+  s.F = F_new;
+  return r;
+}
+
+// Drives the point along F(t) = path(k / n), k = 1..n, over total time 1.
+template <class Path>
+PointState drive_path(const ConstitutiveModel& m, double density0, Path&& path, int n) {
+  PointState s(m);
+  if (step_point(m, density0, s, Eigen::Matrix3d::Identity(), 0.0) != -1) throw std::runtime_error("init failed");
+  for (int k = 1; k <= n; ++k)
+    if (step_point(m, density0, s, path(double(k) / n), 1.0 / n) != -1) throw std::runtime_error("step failed");
+  return s;
+}
+
+}  // namespace tephra::test
