@@ -1,4 +1,199 @@
-// ICE arrives with issue 5; this unit keeps the library target real.
-namespace tephra::ice {
-int ice_version() { return 0; }
-}  // namespace tephra::ice
+// The explicit ICE step: construction, initial state, time step and the
+// phase list. The phases themselves are in IceStep.cpp.
+#include "ice/IceComponent.h"
+
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+#include "core/base/PhaseTimers.h"
+#include "core/grid/Loop.h"
+#include "ice/Equilibration.h"
+#include "ice/IceBoundary.h"
+
+namespace tephra {
+
+namespace {
+// Ghost layers of the cell fields: the second-order slope of a donor cell
+// needs its neighbour, two cells from the face.
+constexpr int kGhosts = 2;
+}  // namespace
+
+IceComponent::IceComponent(IceSetup setup) : setup_(std::move(setup)) {}
+
+// Initial state from the <geom_object>s (Uintah's ICEMaterial::initializeCells,
+// with mixing made explicit): each cell, extra cells included, is sampled at
+// res0 x res1 x res2 sub-cell centres; a point belongs to the first source of
+// the material that contains it. With f_s the fraction of points of source s
+// (density rho_s, temperature T_s, velocity u_s) and f = sum f_s:
+//   rho_CC = sum f_s rho_s   (tiny_rho * rho_0 where f = 0, source 0's state),
+//   u, T   = mass-weighted averages over the sources,
+//   rho_micro = rho_CC / f.
+// The pressure then follows from rho and T through the EOS (the
+// equilibration below; the decks' <pressure> values are not used, as in
+// Uintah, decks README "quirks").
+void IceComponent::initialize() {
+  const Grid& g = setup_.grid;
+  halo_ = std::make_unique<LocalHaloExchange>(g);
+  const std::size_t nm = setup_.materials.size();
+  mats_.clear();
+  for (std::size_t m = 0; m < nm; ++m) mats_.emplace_back(g, kGhosts);
+  press_CC_ = CellScalars(g, kGhosts);
+  press_equil_CC_ = CellScalars(g, kGhosts);
+  delP_Dilatate_ = CellScalars(g, kGhosts);
+  sum_rho_CC_ = CellScalars(g, kGhosts);
+  press_FC_ = FaceScalars(g, 0);
+  mass_L_.assign(nm, CellScalars(g, kGhosts));
+  temp_L_.assign(nm, CellScalars(g, kGhosts));
+  spv_L_.assign(nm, CellScalars(g, kGhosts));
+  vel_L_.assign(nm, CellVectors(g, kGhosts));
+  flux_ = FaceScalars(g, 0);
+  flux2_ = FaceScalars(g, 0);
+  mass_new_ = CellScalars(g, kGhosts);
+  flux_v_ = FaceData<Vec3>(g, 0);
+  dq_ = CellScalars(g, kGhosts);
+  sum_kappa_ = CellScalars(g, kGhosts);
+  dqv_ = CellVectors(g, kGhosts);
+
+  for (std::size_t m = 0; m < nm; ++m) {
+    const IceMaterialSpec& spec = setup_.materials[m];
+    IceMaterialFields& f = mats_[m];
+    // Ghost entries outside the domain stay at harmless values.
+    f.rho_CC.fill(spec.sources[0].density);
+    f.temp_CC.fill(spec.sources[0].temperature);
+    f.sp_vol_CC.fill(1.0 / spec.sources[0].density);
+    f.rho_micro_CC.fill(spec.sources[0].density);
+    f.vol_frac_CC.fill(1.0);
+    f.vel_CC.fill(Vec3::Zero());
+    for (std::size_t pi = 0; pi < g.patches.size(); ++pi) {
+      for_each_cell(g.patches[pi].cells_with_extra(), [&](int i, int j, int k) {
+        std::vector<int> count(spec.sources.size(), 0);
+        const IntVec3 res = spec.sources[0].res;
+        int total = 0;
+        for (int c = 0; c < res[2]; ++c)
+          for (int b = 0; b < res[1]; ++b)
+            for (int a = 0; a < res[0]; ++a) {
+              const Vec3 x = g.lower + Vec3((i + (a + 0.5) / res[0]) * g.dx[0], (j + (b + 0.5) / res[1]) * g.dx[1],
+                                            (k + (c + 0.5) / res[2]) * g.dx[2]);
+              ++total;
+              for (std::size_t s = 0; s < spec.sources.size(); ++s)
+                if (spec.sources[s].piece->inside(x)) {
+                  ++count[s];
+                  break;
+                }
+            }
+        double frac = 0, mass = 0, energy = 0;
+        Vec3 mom = Vec3::Zero();
+        for (std::size_t s = 0; s < spec.sources.size(); ++s) {
+          const double fs = double(count[s]) / total;
+          const IceSource& src = spec.sources[s];
+          frac += fs;
+          mass += fs * src.density;
+          mom += fs * src.density * src.velocity;
+          energy += fs * src.density * src.temperature;
+        }
+        if (frac > 0) {
+          f.rho_CC[pi](i, j, k) = mass;
+          f.vel_CC[pi](i, j, k) = mom / mass;
+          f.temp_CC[pi](i, j, k) = energy / mass;
+          f.sp_vol_CC[pi](i, j, k) = frac / mass;
+        } else {
+          const IceSource& s0 = spec.sources[0];
+          f.rho_CC[pi](i, j, k) = spec.tiny_rho * s0.density;
+          f.vel_CC[pi](i, j, k) = s0.velocity;
+          f.temp_CC[pi](i, j, k) = s0.temperature;
+          f.sp_vol_CC[pi](i, j, k) = 1.0 / s0.density;
+        }
+      });
+    }
+  }
+  press_CC_.fill(setup_.reference_pressure);
+  press_equil_CC_.fill(setup_.reference_pressure);
+  delP_Dilatate_.fill(0.0);
+  compute_equilibration_pressure(0);
+  for (std::size_t pi = 0; pi < g.patches.size(); ++pi)
+    press_CC_[pi] = press_equil_CC_[pi];
+  for (std::size_t m = 0; m < nm; ++m) apply_state_bcs(m);
+  check_state(0, "initialization");
+}
+
+// Uintah's explicit ICE time step (computeStableTimestep):
+//   dt = cfl * min over materials, interior cells and directions d of
+//        dx_d / (c + |u_d|).
+double IceComponent::stable_timestep() const {
+  const Grid& g = setup_.grid;
+  double dt = std::numeric_limits<double>::infinity();
+  for (const IceMaterialFields& f : mats_)
+    for (std::size_t pi = 0; pi < g.patches.size(); ++pi)
+      for_each_cell_serial(g.patches[pi].cells(), [&](int i, int j, int k) {
+        const double c = f.speedSound_CC[pi](i, j, k);
+        const Vec3& u = f.vel_CC[pi](i, j, k);
+        for (int d = 0; d < 3; ++d) dt = std::min(dt, g.dx[d] / (c + std::abs(u[d]) + 1e-100));
+      });
+  return setup_.cfl * dt;
+}
+
+// One explicit ICE step (Vaango theory manual ch. 26 step list, pure-fluid
+// subset; inventory ch. 24 "ICE time step"). docs/ice.md has the equations.
+void IceComponent::advance(double /*t*/, double dt, int step) {
+  PhaseTimers& T = phase_timers();
+  { PhaseTimers::Scope s(T, "ICE: equilibration pressure");       compute_equilibration_pressure(step); }
+  { PhaseTimers::Scope s(T, "ICE: face velocities");              compute_face_velocities(dt); }
+  { PhaseTimers::Scope s(T, "ICE: face momentum exchange");       add_exchange_to_face_velocities(dt); }
+  { PhaseTimers::Scope s(T, "ICE: pressure increment");           compute_delP_and_pressure(dt); }
+  { PhaseTimers::Scope s(T, "ICE: face pressure");                compute_face_pressure(); }
+  { PhaseTimers::Scope s(T, "ICE: Lagrangian values, exchange");  lagrangian_values_and_exchange(dt); }
+  { PhaseTimers::Scope s(T, "ICE: advection");                    advect_and_advance(dt, step); }
+  check_state(step, "end of step");
+}
+
+void IceComponent::apply_state_bcs(std::size_t m) {
+  const Grid& g = setup_.grid;
+  IceMaterialFields& f = mats_[m];
+  for (std::size_t pi = 0; pi < g.patches.size(); ++pi) {
+    const Patch& p = g.patches[pi];
+    for (int face = 0; face < 6; ++face) {
+      const GridFace gf = static_cast<GridFace>(face);
+      const auto& bc = setup_.bcs[m][face];
+      apply_scalar_bc(g, p, gf, bc[kBcDensity], f.rho_CC[pi]);
+      apply_scalar_bc(g, p, gf, bc[kBcTemperature], f.temp_CC[pi]);
+      apply_vector_bc(g, p, gf, bc[kBcVelocity], f.vel_CC[pi]);
+      if (bc[kBcSpecificVol].kind == BCKind::ComputeFromDensity) {
+        for_each_boundary_cell(g, p, gf, [&](const IntVec3& e, const IntVec3&) {
+          f.sp_vol_CC[pi](e) = f.vol_frac_CC[pi](e) / f.rho_CC[pi](e);
+        });
+      } else {
+        apply_scalar_bc(g, p, gf, bc[kBcSpecificVol], f.sp_vol_CC[pi]);
+      }
+    }
+  }
+  halo_->exchange(f.rho_CC);
+  halo_->exchange(f.temp_CC);
+  halo_->exchange(f.vel_CC);
+  halo_->exchange(f.sp_vol_CC);
+}
+
+// A NaN, a non-positive density, temperature or specific volume stops the
+// run (exit 4) naming the material, the cell and the step.
+void IceComponent::check_state(int step, const char* phase) const {
+  const Grid& g = setup_.grid;
+  for (std::size_t m = 0; m < mats_.size(); ++m) {
+    const IceMaterialFields& f = mats_[m];
+    for (std::size_t pi = 0; pi < g.patches.size(); ++pi)
+      for_each_cell_serial(g.patches[pi].cells_with_extra(), [&](int i, int j, int k) {
+        const double rho = f.rho_CC[pi](i, j, k), T = f.temp_CC[pi](i, j, k), v = f.sp_vol_CC[pi](i, j, k);
+        const Vec3& u = f.vel_CC[pi](i, j, k);
+        const double p = press_CC_[pi](i, j, k);
+        if (rho > 0 && T > 0 && v > 0 && std::isfinite(rho) && std::isfinite(T) && std::isfinite(v) && u.allFinite() &&
+            std::isfinite(p))
+          return;
+        std::ostringstream os;
+        os << "ICE " << phase << " at step " << step << ": material " << m << " cell (" << i << "," << j << "," << k
+           << ") has rho_CC = " << rho << ", temp_CC = " << T << ", sp_vol_CC = " << v << ", vel_CC = ("
+           << u[0] << "," << u[1] << "," << u[2] << "), press_CC = " << p;
+        throw NumericalFailure(os.str());
+      });
+  }
+}
+
+}  // namespace tephra

@@ -3,25 +3,27 @@
 #include <map>
 
 #include "core/base/Errors.h"
+#include "ice/IceComponent.h"
 #include "models/solid/ConstitutiveModel.h"
 #include "mpm/MpmComponent.h"
 
 namespace tephra {
 
-// SimulationComponent types of Vaango's schema. Only "mpm" runs today; the
+// SimulationComponent types of Vaango's schema. "mpm" and "ice" run today; the
 // others are valid input that needs a component Tephra does not have yet.
 std::unique_ptr<Component> make_component(const Deck& deck) {
   const DeckNode& sc = deck.root.require_child("SimulationComponent");
   std::string type = sc.require_attribute("type");
   if (type == "mpm") return make_mpm_component(deck);
-  sc.missing_feature("SimulationComponent type '" + type + "' (only 'mpm' runs so far)");
+  if (type == "ice") return make_ice_component(deck);
+  sc.missing_feature("SimulationComponent type '" + type + "' (only 'mpm' and 'ice' run so far)");
 }
 
 std::vector<std::string> registered_keys(const std::string& family) {
   static const std::map<std::string, std::vector<std::string> (*)()> families = {
-      {"SimulationComponent", [] { return std::vector<std::string>{"mpm"}; }},
+      {"SimulationComponent", [] { return std::vector<std::string>{"mpm", "ice"}; }},
       {"constitutive_model", [] { return constitutive_model_types(); }},
-      {"EOS", [] { return std::vector<std::string>{}; }},
+      {"EOS", [] { return equation_of_state_types(); }},
       {"Model", [] { return std::vector<std::string>{}; }},
       {"contact", [] { return mpm_contact_types(); }},
       {"interpolator", [] { return mpm_interpolators(); }},

@@ -1,0 +1,51 @@
+#pragma once
+// Advection of the Lagrangian cell quantities through the faces (step 10 of
+// the ICE step; Uintah's FirstOrderAdvector / SecondOrderAdvector in a face
+// form). Each face with normal velocity u_f moves the slab of volume
+// |u_f| dt A out of its upwind (donor) cell D, a fraction phi = |u_f| dt / dx
+// of the cell. The flux of a density-like quantity q (mass per volume,
+// volume fraction) is, in units of q times the cell volume,
+//     F = phi * q_slab,    q_slab = q_D                       (first order)
+//                          q_slab = q_D + s_D (1 - phi)/2 * dq_D   (second order)
+// where s_D = +1 when the slab sits at the high side of D (u_f > 0), -1 else,
+// and dq_D is D's van Leer limited difference along the face normal,
+//     dq = 2 a b / (a + b) if a b > 0 else 0,  a = q_D - q_{D-1}, b = q_{D+1} - q_D
+// (the slab centroid is (1 - phi)/2 cells from D's centre). Extra cells get
+// dq = 0. A specific quantity psi (velocity, c_v T, specific volume) moves
+// with the mass: F_psi = F_mass * psi_slab, psi_slab built the same way from
+// psi. These are compatible fluxes (VanderHeyden & Kashiwa; inventory ch. 24
+// step 10): a uniform psi stays uniform to round-off whatever the density.
+// Each face flux is computed once, so the update is conservative.
+//
+// Differences from Uintah (documented in docs/ice.md): Uintah limits a
+// cell-centred gradient with the min/max of the neighbours and uses the
+// (mass-weighted) slab centroids in all three directions at once; here the
+// slopes are per direction (van Leer), which is TVD in 1-D.
+#include "core/grid/Grid.h"
+#include "ice/IceFields.h"
+#include "ice/IceSetup.h"
+
+namespace tephra {
+
+// Throws NumericalFailure naming the cell when a cell would lose more than
+// its content in one step (sum of outgoing phi > 1: the CFL bound, Uintah's
+// "bullet proofing" of the outflux volumes).
+void check_outflux(const Grid& g, const FaceScalars& u, double dt, int step);
+
+// flux.at(d, p)(face) = F (signed: positive along +d) for every face of the
+// interior cells of every patch. q must hold valid values in the extra cells
+// and ghosts (two layers for second order).
+void density_fluxes(const Grid& g, AdvectionOrder order, const CellScalars& q, const FaceScalars& u, double dt,
+                    FaceScalars& flux);
+
+// Specific quantity psi carried by the mass fluxes `mass_flux`.
+template <class T>
+void specific_fluxes(const Grid& g, AdvectionOrder order, const PatchFields<CellField<T>>& psi,
+                     const FaceScalars& u, const FaceScalars& mass_flux, double dt, FaceData<T>& flux);
+
+// dq(c) = sum of incoming minus outgoing fluxes over the six faces of each
+// interior cell c (in units of q times the cell volume).
+template <class T>
+void flux_divergence(const Grid& g, const FaceData<T>& flux, PatchFields<CellField<T>>& dq);
+
+}  // namespace tephra

@@ -1,0 +1,75 @@
+#pragma once
+// The explicit ICE component: multi-material, cell-centred, compressible flow
+// (Vaango theory manual ch. 24 and the step list of ch. 26 without the MPM
+// parts; Uintah's explicit ICE where the manual is silent). advance() in
+// IceComponent.cpp lists the step, one named phase per line; docs/ice.md
+// gives the equations.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/grid/HaloExchange.h"
+#include "core/sim/Component.h"
+#include "ice/IceFields.h"
+#include "ice/IceSetup.h"
+
+namespace tephra {
+
+struct Deck;
+
+class IceComponent final : public Component {
+ public:
+  explicit IceComponent(IceSetup setup);
+
+  std::string name() const override { return "ICE"; }
+  void initialize() override;
+  double stable_timestep() const override;
+  void advance(double t, double dt, int step) override;
+  void fill_output(const std::set<std::string>& labels, OutputFrame& frame) const override;
+  std::map<std::string, std::vector<double>> reductions(const std::set<std::string>& labels) const override;
+  std::set<std::string> known_labels() const override;
+  void save_state(StateArchive& archive) const override;
+  void load_state(const StateArchive& archive) override;
+
+  const IceSetup& setup() const { return setup_; }
+  const Grid& grid() const { return setup_.grid; }
+  const std::vector<IceMaterialFields>& fields() const { return mats_; }
+  const CellScalars& press_CC() const { return press_CC_; }
+  const CellScalars& press_equil_CC() const { return press_equil_CC_; }
+  const CellScalars& delP_Dilatate() const { return delP_Dilatate_; }
+
+ private:
+  // Phases of the step (IceStep.cpp), in order.
+  void compute_equilibration_pressure(int step);
+  void compute_face_velocities(double dt);
+  void add_exchange_to_face_velocities(double dt);
+  void compute_delP_and_pressure(double dt);
+  void compute_face_pressure();
+  void lagrangian_values_and_exchange(double dt);
+  void advect_and_advance(double dt, int step);
+
+  void apply_state_bcs(std::size_t m);  // rho, vel, temp, sp_vol extra cells of material m
+  void check_state(int step, const char* phase) const;
+
+  IceSetup setup_;
+  std::unique_ptr<HaloExchange> halo_;
+  std::vector<IceMaterialFields> mats_;
+  CellScalars press_CC_, press_equil_CC_, delP_Dilatate_, sum_rho_CC_;
+  FaceScalars press_FC_;
+  // Lagrangian quantities of the step, per material (scratch): mass, and the
+  // specific quantities advected with it (velocity, temperature, specific volume).
+  std::vector<CellScalars> mass_L_, temp_L_, spv_L_;
+  std::vector<CellVectors> vel_L_;
+  FaceScalars flux_, flux2_;
+  FaceData<Vec3> flux_v_;
+  CellScalars dq_, sum_kappa_, mass_new_;
+  CellVectors dqv_;
+};
+
+// Reads <CFD><ICE>, <MaterialProperties><ICE>, <exchange_properties>,
+// <PhysicalConstants>, <Grid> and its <BoundaryConditions>.
+std::unique_ptr<IceComponent> make_ice_component(const Deck& deck);
+
+std::vector<std::string> ice_advection_types();  // {"FirstOrder", "SecondOrder"}
+
+}  // namespace tephra

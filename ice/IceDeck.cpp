@@ -1,0 +1,279 @@
+// make_ice_component: the ICE parts of a deck -> an IceComponent.
+#include <algorithm>
+#include <set>
+
+#include "core/deck/DeckLoader.h"
+#include "core/deck/DeckNode.h"
+#include "ice/Exchange.h"
+#include "ice/IceComponent.h"
+#include "models/ModelParameters.h"
+
+namespace tephra {
+
+namespace {
+
+std::string join(const std::vector<std::string>& v) {
+  std::string s;
+  for (const auto& x : v) s += (s.empty() ? "" : ", ") + x;
+  return s;
+}
+
+// ModelParameters over the children of <EOS>; a failure about a parameter that
+// is not a child (gamma, specific_heat live beside <EOS>) is located at <EOS>.
+class EosDeckParameters final : public ModelParameters {
+ public:
+  explicit EosDeckParameters(const DeckNode& n) : node_(n) {}
+  bool has(const std::string& name) const override { return node_.has_child(name); }
+  double get_double(const std::string& name) const override { return node_.get_double(name); }
+  double get_double(const std::string& name, double fallback) const override {
+    return node_.get_double(name, fallback);
+  }
+  bool get_bool(const std::string& name, bool fallback) const override { return node_.get_bool(name, fallback); }
+  [[noreturn]] void fail(const std::string& name, const std::string& message) const override {
+    const DeckNode* c = node_.child(name);
+    (c ? *c : node_).fail(message);
+  }
+  [[noreturn]] void missing_feature(const std::string& name, const std::string& what) const override {
+    const DeckNode* c = node_.child(name);
+    (c ? *c : node_).missing_feature(what);
+  }
+
+ private:
+  const DeckNode& node_;
+};
+
+double positive(const DeckNode& parent, const char* name) {
+  const DeckNode& n = parent.require_child(name);
+  const double v = n.as_double();
+  if (!(v > 0.0)) n.fail(std::string(name) + " must be > 0");
+  return v;
+}
+
+IceSource parse_source(const DeckNode& go, GeometryRegistry& geometry) {
+  IceSource s;
+  s.piece = geometry.parse_geom_object(go);
+  s.res = go.get_int_vec3("res", IntVec3::Constant(2));
+  if ((s.res.array() < 1).any()) go.require_child("res").fail("res must be >= 1 in every direction");
+  s.velocity = go.get_vec3("velocity");
+  s.density = positive(go, "density");
+  s.pressure = positive(go, "pressure");
+  s.temperature = positive(go, "temperature");
+  for (const DeckNode& c : go.children) {
+    if (GeometryRegistry::is_piece_name(c.name)) continue;
+    static const std::set<std::string> known = {"res", "velocity", "density", "pressure", "temperature"};
+    if (!known.count(c.name)) c.missing_feature("ICE <geom_object> initial value <" + c.name + ">");
+  }
+  return s;
+}
+
+IceMaterialSpec parse_material(const DeckNode& mat, int index, GeometryRegistry& geometry) {
+  IceMaterialSpec m;
+  m.index = index;
+  m.name = mat.attribute("name").value_or("");
+  m.gamma = positive(mat, "gamma");
+  m.cv = positive(mat, "specific_heat");
+  m.dynamic_viscosity = mat.require_child("dynamic_viscosity").as_double();
+  m.thermal_conductivity = mat.require_child("thermal_conductivity").as_double();
+  if (m.dynamic_viscosity < 0) mat.require_child("dynamic_viscosity").fail("dynamic_viscosity must be >= 0");
+  if (m.thermal_conductivity < 0) mat.require_child("thermal_conductivity").fail("thermal_conductivity must be >= 0");
+  if (m.dynamic_viscosity != 0)
+    mat.require_child("dynamic_viscosity").missing_feature("ICE viscous stresses (dynamic_viscosity != 0)");
+  if (m.thermal_conductivity != 0)
+    mat.require_child("thermal_conductivity").missing_feature("ICE heat conduction (thermal_conductivity != 0)");
+  for (const DeckNode& c : mat.children) {
+    if (c.name == "EOS") {
+      m.eos_type = c.require_attribute("type");
+      EosDeckParameters params(c);
+      m.eos = create_equation_of_state(m.eos_type, params, {m.gamma, m.cv});
+      if (!m.eos) {
+        const auto& vaango = vaango_equation_of_state_types();
+        if (std::find(vaango.begin(), vaango.end(), m.eos_type) != vaango.end())
+          c.missing_feature("EOS type '" + m.eos_type + "' (implemented: " + join(equation_of_state_types()) + ")");
+        c.fail("unknown EOS type '" + m.eos_type + "' (implemented: " + join(equation_of_state_types()) + ")");
+      }
+      for (const DeckNode& p : c.children)
+        if (!params.has(p.name) || m.eos_type == "ideal_gas")
+          p.fail("EOS type '" + m.eos_type + "' has no parameter <" + p.name + ">");
+    } else if (c.name == "geom_object") {
+      m.sources.push_back(parse_source(c, geometry));
+    } else if (c.name == "tiny_rho") {
+      m.tiny_rho = positive(mat, "tiny_rho");
+    } else if (c.name == "gamma" || c.name == "specific_heat" || c.name == "dynamic_viscosity" ||
+               c.name == "thermal_conductivity") {
+    } else if (c.name == "isSurroundingMatl" || c.name == "includeFlowWork") {
+      if (c.as_bool()) c.missing_feature("ICE material <" + c.name + "> = true");
+    } else {
+      c.missing_feature("ICE material property <" + c.name + ">");
+    }
+  }
+  if (!m.eos) mat.require_child("EOS");
+  if (m.sources.empty()) mat.fail("an ICE material needs at least one <geom_object>");
+  return m;
+}
+
+// <exchange_coefficients><momentum>/<heat>: the upper triangle K_01, K_02, ...,
+// K_12, ... row by row (Uintah's order), n(n-1)/2 values.
+std::vector<double> parse_coefficients(const DeckNode* ec, const char* name, int n) {
+  std::vector<double> C(static_cast<std::size_t>(n * n), 0.0);
+  if (n < 2) return C;
+  if (!ec) return C;
+  const DeckNode* node = ec->child(name);
+  if (!node) ec->fail(std::string("<exchange_coefficients> needs <") + name + ">");
+  const std::vector<double> v = node->as_doubles();
+  if (v.size() != static_cast<std::size_t>(n * (n - 1) / 2))
+    node->fail(std::string("<") + name + "> needs n(n-1)/2 = " + std::to_string(n * (n - 1) / 2) +
+               " values for " + std::to_string(n) + " materials");
+  std::size_t k = 0;
+  for (int a = 0; a < n; ++a)
+    for (int b = a + 1; b < n; ++b) {
+      if (v[k] < 0) node->fail(std::string("<") + name + "> values must be >= 0");
+      C[a * n + b] = C[b * n + a] = v[k++];
+    }
+  return C;
+}
+
+void parse_cfd(const DeckNode& root, IceSetup& s) {
+  const DeckNode& cfd = root.require_child("CFD");
+  for (const DeckNode& c : cfd.children) {
+    if (c.name == "cfl") {
+      s.cfl = c.as_double();
+      if (!(s.cfl > 0.0 && s.cfl <= 1.0)) c.fail("cfl must be in (0, 1]");
+    } else if (c.name == "ICE") {
+      for (const DeckNode& i : c.children) {
+        if (i.name == "advection") {
+          const std::string type = i.require_attribute("type");
+          if (type == "FirstOrder") s.advection = AdvectionOrder::First;
+          else if (type == "SecondOrder") s.advection = AdvectionOrder::Second;
+          else if (type == "FirstOrderGPU") i.missing_feature("advection type 'FirstOrderGPU'");
+          else i.fail("unknown advection type '" + type + "' (FirstOrder, SecondOrder)");
+          for (const char* a : {"useCompatibleFluxes", "compatibleFluxes"})
+            if (auto v = i.attribute(a); v && *v != "true")
+              i.missing_feature(std::string("advection ") + a + "=\"" + *v + "\" (Tephra always uses compatible fluxes)");
+        } else if (i.name == "max_iteration_equilibration") {
+          s.max_iter_equilibration = i.as_int();
+          if (s.max_iter_equilibration < 1) i.fail("max_iteration_equilibration must be >= 1");
+        } else if (i.name == "ClampSpecificVolume") {
+          if (i.as_bool()) i.missing_feature("<ClampSpecificVolume> true");
+        } else {
+          i.missing_feature("<CFD><ICE><" + i.name + ">");
+        }
+      }
+    } else if (c.name == "CanAddICEMaterial") {
+      if (c.as_bool()) c.missing_feature("<CanAddICEMaterial> true");
+    } else {
+      c.missing_feature("<CFD><" + c.name + ">");
+    }
+  }
+  if (!cfd.has_child("cfl")) cfd.fail("<CFD> needs <cfl>");
+  const DeckNode& ice = cfd.require_child("ICE");
+  ice.require_child("advection");
+}
+
+IceFaceBc resolve(const BoundaryConditions& bcs, GridFace face, int m, const char* label, const DeckNode& grid_node) {
+  IceFaceBc out;
+  const BoundaryCondition* bc = bcs.find(face, m, label);
+  if (!bc) bc = bcs.find(face, m, "Symmetric");
+  if (!bc) {
+    for (const BoundaryCondition* b : bcs.on_face(face, m))
+      if (b->kind == BCKind::Symmetry) bc = b;
+  }
+  if (!bc)
+    grid_node.fail(std::string("ICE material ") + std::to_string(m) + " has no boundary condition for label '" +
+                   label + "' on face " + face_name(face));
+  if (bc->region.kind != FaceRegion::Side)
+    throw MissingFeature(bc->where, "ICE boundary conditions on part of a face (circle, rectangle, ...)");
+  out.kind = bc->kind;
+  switch (bc->kind) {
+    case BCKind::Symmetry: return out;
+    case BCKind::Dirichlet:
+    case BCKind::Neumann:
+      if (!bc->has_value) throw DeckError(bc->where, std::string("a ") + bc_kind_name(bc->kind) + " condition needs a <value>");
+      out.scalar = bc->scalar;
+      out.vector = bc->vector;
+      if (std::string(label) == "Velocity" && !bc->is_vector)
+        throw DeckError(bc->where, "a Velocity condition needs a vector <value> [u, v, w]");
+      if (std::string(label) != "Velocity" && bc->is_vector)
+        throw DeckError(bc->where, std::string("a ") + label + " condition needs a scalar <value>");
+      return out;
+    case BCKind::ComputeFromDensity:
+      if (std::string(label) != "SpecificVol")
+        throw MissingFeature(bc->where, std::string("computeFromDensity for label '") + label + "' (only SpecificVol)");
+      return out;
+    default:
+      throw MissingFeature(bc->where, std::string("ICE boundary condition var=\"") + bc_kind_name(bc->kind) + "\"");
+  }
+}
+
+}  // namespace
+
+std::vector<std::string> ice_advection_types() { return {"FirstOrder", "SecondOrder"}; }
+
+std::unique_ptr<IceComponent> make_ice_component(const Deck& deck) {
+  const DeckNode& root = deck.root;
+  IceSetup s;
+  const DeckNode& grid_node = root.require_child("Grid");
+  s.grid = make_grid(grid_node);
+  for (int d = 0; d < 3; ++d) {
+    if (s.grid.periodic[d]) grid_node.missing_feature("ICE with periodic boundaries");
+    if (s.grid.extra_cells[d] != 1)
+      grid_node.missing_feature("ICE with extraCells != 1 (ICE needs exactly one layer of extra cells)");
+  }
+  parse_cfd(root, s);
+  if (const DeckNode* pc = root.child("PhysicalConstants")) {
+    s.gravity = pc->get_vec3("gravity", Vec3::Zero());
+    s.reference_pressure = pc->get_double("reference_pressure", 101325.0);
+  }
+
+  const DeckNode& props = root.require_child("MaterialProperties");
+  const DeckNode& ice = props.require_child("ICE");
+  GeometryRegistry geometry;
+  for (const DeckNode& c : ice.children) {
+    if (c.name == "material") s.materials.push_back(parse_material(c, int(s.materials.size()), geometry));
+    else c.missing_feature("<MaterialProperties><ICE><" + c.name + ">");
+  }
+  if (s.materials.empty()) ice.fail("<MaterialProperties><ICE> has no <material>");
+  if (s.materials.size() > std::size_t(kMaxExchangeMaterials)) ice.missing_feature("more than 16 ICE materials");
+  if (const DeckNode* mpm = props.child("MPM")) mpm->missing_feature("MPM materials in an ICE run (use mpmice)");
+
+  const int n = int(s.materials.size());
+  const DeckNode* ec = nullptr;
+  if (const DeckNode* ep = props.child("exchange_properties")) {
+    for (const DeckNode& c : ep->children) {
+      if (c.name == "exchange_coefficients") {
+        ec = &c;
+        for (const DeckNode& k : c.children)
+          if (k.name != "momentum" && k.name != "heat") k.missing_feature("<exchange_coefficients><" + k.name + ">");
+      } else {
+        c.missing_feature("<exchange_properties><" + c.name + ">");
+      }
+    }
+  }
+  if (n > 1 && !ec) props.fail("two or more ICE materials need <exchange_properties><exchange_coefficients>");
+  s.K = parse_coefficients(ec, "momentum", n);
+  s.H = parse_coefficients(ec, "heat", n);
+
+  const BoundaryConditions bcs = parse_boundary_conditions(grid_node);
+  if (bcs.lodi || bcs.sine || bcs.micro_slip)
+    grid_node.require_child("BoundaryConditions").missing_feature("ICE LODI / sine / micro-slip boundary conditions");
+  static const char* labels[kBcLabels] = {"Pressure", "Velocity", "Temperature", "Density", "SpecificVol"};
+  for (const BoundaryCondition& b : bcs.list) {
+    if (b.material != kAllMaterials && (b.material < 0 || b.material >= n))
+      throw DeckError(b.where, "boundary condition for material " + std::to_string(b.material) + " but the deck has " +
+                          std::to_string(n) + " ICE material(s)");
+    const bool known = b.label == "Symmetric" ||
+                       std::find(std::begin(labels), std::end(labels), b.label) != std::end(labels);
+    if (!known) throw MissingFeature(b.where, "ICE boundary condition label '" + b.label + "'");
+  }
+  s.bcs.resize(n);
+  for (int m = 0; m < n; ++m)
+    for (int f = 0; f < 6; ++f)
+      for (int l = 0; l < kBcLabels; ++l) {
+        // Pressure is one field shared by all materials: Uintah reads its BC
+        // from material 0 (or id="all").
+        const int mat = l == kBcPressure ? 0 : m;
+        s.bcs[m][f][l] = resolve(bcs, static_cast<GridFace>(f), mat, labels[l], grid_node);
+      }
+  return std::make_unique<IceComponent>(std::move(s));
+}
+
+}  // namespace tephra

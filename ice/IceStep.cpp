@@ -1,0 +1,368 @@
+// The phases of the explicit ICE step, in order. Equation numbers: Vaango
+// theory manual (ch. 24, 26); "Uintah" marks what the manual leaves open and
+// Uintah's explicit ICE (ICE.cc) fixes. See docs/ice.md.
+#include <cmath>
+#include <sstream>
+
+#include "core/base/Errors.h"
+#include "core/grid/Loop.h"
+#include "ice/Equilibration.h"
+#include "ice/Exchange.h"
+#include "ice/IceAdvection.h"
+#include "ice/IceBoundary.h"
+#include "ice/IceComponent.h"
+
+namespace tephra {
+
+namespace {
+
+IndexRange faces_of(const Patch& p, int d) { return {p.lo, p.hi + IntVec3::Unit(d)}; }
+
+}  // namespace
+
+// Step 1 (eq. 24.7): p_eq, theta_m, rho_micro_m, c_m in every cell including
+// the extra cells (Uintah iterates the extra cells too), then the Pressure BC.
+void IceComponent::compute_equilibration_pressure(int step) {
+  const Grid& g = setup_.grid;
+  const std::size_t nm = mats_.size();
+  for (std::size_t pi = 0; pi < g.patches.size(); ++pi) {
+    std::vector<IntVec3> cells;
+    for_each_cell_serial(g.patches[pi].cells_with_extra(), [&](int i, int j, int k) { cells.emplace_back(i, j, k); });
+    const std::size_t n = cells.size();
+    std::vector<double> press(n);
+    std::vector<std::vector<double>> rho(nm, std::vector<double>(n)), temp(nm, std::vector<double>(n)),
+        rho_micro(nm, std::vector<double>(n)), theta(nm, std::vector<double>(n)), c2(nm, std::vector<double>(n));
+    for (std::size_t c = 0; c < n; ++c) press[c] = press_CC_[pi](cells[c]);
+    std::vector<EquilibrationMaterial> em(nm);
+    for (std::size_t m = 0; m < nm; ++m) {
+      for (std::size_t c = 0; c < n; ++c) {
+        rho[m][c] = mats_[m].rho_CC[pi](cells[c]);
+        temp[m][c] = mats_[m].temp_CC[pi](cells[c]);
+        rho_micro[m][c] = 1.0 / mats_[m].sp_vol_CC[pi](cells[c]);
+      }
+      em[m] = {setup_.materials[m].eos.get(), rho[m], temp[m], rho_micro[m], theta[m], c2[m]};
+    }
+    const EquilibrationResult r = equilibrate_pressure(em, press, setup_.max_iter_equilibration);
+    if (!r.converged) {
+      const IntVec3& c = cells[static_cast<std::size_t>(r.failed_cell)];
+      std::ostringstream os;
+      os << "ICE equilibration pressure did not converge in " << setup_.max_iter_equilibration
+         << " iterations at step " << step << " in cell (" << c[0] << "," << c[1] << "," << c[2] << ")";
+      throw NumericalFailure(os.str());
+    }
+    for (std::size_t c = 0; c < n; ++c) {
+      press_equil_CC_[pi](cells[c]) = press[c];
+      for (std::size_t m = 0; m < nm; ++m) {
+        IceMaterialFields& f = mats_[m];
+        f.rho_micro_CC[pi](cells[c]) = rho_micro[m][c];
+        f.sp_vol_CC[pi](cells[c]) = 1.0 / rho_micro[m][c];
+        f.vol_frac_CC[pi](cells[c]) = theta[m][c];
+        f.speedSound_CC[pi](cells[c]) = std::sqrt(c2[m][c]);
+      }
+    }
+    for (int face = 0; face < 6; ++face)
+      apply_scalar_bc(g, g.patches[pi], static_cast<GridFace>(face), setup_.bcs[0][face][kBcPressure],
+                      press_equil_CC_[pi]);
+  }
+  halo_->exchange(press_equil_CC_);
+  for (IceMaterialFields& f : mats_) {
+    halo_->exchange(f.sp_vol_CC);
+    halo_->exchange(f.vol_frac_CC);
+    halo_->exchange(f.rho_micro_CC);
+    halo_->exchange(f.speedSound_CC);
+  }
+}
+
+// Step 2 (eq. 26.1, Uintah's computeFaceCenteredVelocities): on the face
+// between L and R along d,
+//   u* = (rho_L u_L + rho_R u_R)/(rho_L + rho_R)
+//        - dt * 2 v_L v_R/(v_L + v_R) * (p_R - p_L)/dx + g_d dt,
+// with rho = rho_CC (bulk), v = sp_vol, p = p_eq. Then the boundary faces.
+void IceComponent::compute_face_velocities(double dt) {
+  const Grid& g = setup_.grid;
+  for (std::size_t m = 0; m < mats_.size(); ++m) {
+    IceMaterialFields& f = mats_[m];
+    for (std::size_t pi = 0; pi < g.patches.size(); ++pi) {
+      const GridArray<double>& rho = f.rho_CC[pi];
+      const GridArray<double>& v = f.sp_vol_CC[pi];
+      const GridArray<Vec3>& u = f.vel_CC[pi];
+      const GridArray<double>& p = press_equil_CC_[pi];
+      for (int d = 0; d < 3; ++d) {
+        GridArray<double>& uf = f.vel_FC.at(d, pi);
+        const IntVec3 e = IntVec3::Unit(d);
+        const double gdt = setup_.gravity[d] * dt, inv_dx = 1.0 / g.dx[d];
+        for_each_cell(faces_of(g.patches[pi], d), [&](int i, int j, int k) {
+          const IntVec3 R(i, j, k), L = R - e;
+          const double term1 = (rho(L) * u(L)[d] + rho(R) * u(R)[d]) / (rho(L) + rho(R));
+          const double sp_vol_brack = 2.0 * v(L) * v(R) / (v(L) + v(R));
+          uf(R) = term1 - dt * sp_vol_brack * (p(R) - p(L)) * inv_dx + gdt;
+        });
+      }
+      for (int face = 0; face < 6; ++face) {
+        const GridFace gf = static_cast<GridFace>(face);
+        apply_face_velocity_bc(g, g.patches[pi], gf, setup_.bcs[m][face][kBcVelocity], f.vel_FC.at(face_axis(gf), pi));
+      }
+    }
+  }
+}
+
+// Step 2b (Uintah's addExchangeToFaceVelocities): the implicit momentum
+// exchange of Exchange.h on every face, with theta_f = (theta_L + theta_R)/2
+// and v_f = 2 v_L v_R/(v_L + v_R). One material: vel_FCME = vel_FC.
+void IceComponent::add_exchange_to_face_velocities(double dt) {
+  const Grid& g = setup_.grid;
+  const std::size_t nm = mats_.size();
+  for (std::size_t pi = 0; pi < g.patches.size(); ++pi)
+    for (int d = 0; d < 3; ++d) {
+      if (nm == 1) {
+        mats_[0].vel_FCME.at(d, pi) = mats_[0].vel_FC.at(d, pi);
+        continue;
+      }
+      const IntVec3 e = IntVec3::Unit(d);
+      for_each_cell(faces_of(g.patches[pi], d), [&](int i, int j, int k) {
+        const IntVec3 R(i, j, k), L = R - e;
+        double theta[kMaxExchangeMaterials], sv[kMaxExchangeMaterials], u[kMaxExchangeMaterials];
+        for (std::size_t m = 0; m < nm; ++m) {
+          const IceMaterialFields& f = mats_[m];
+          theta[m] = 0.5 * (f.vol_frac_CC[pi](L) + f.vol_frac_CC[pi](R));
+          const double vL = f.sp_vol_CC[pi](L), vR = f.sp_vol_CC[pi](R);
+          sv[m] = 2.0 * vL * vR / (vL + vR);
+          u[m] = f.vel_FC.at(d, pi)(R);
+        }
+        solve_exchange(dt, {theta, nm}, {sv, nm}, {}, setup_.K, {u, nm});
+        for (std::size_t m = 0; m < nm; ++m) mats_[m].vel_FCME.at(d, pi)(R) = u[m];
+      });
+    }
+  if (nm == 1) return;
+  for (std::size_t m = 0; m < nm; ++m)
+    for (std::size_t pi = 0; pi < g.patches.size(); ++pi)
+      for (int face = 0; face < 6; ++face) {
+        const GridFace gf = static_cast<GridFace>(face);
+        apply_face_velocity_bc(g, g.patches[pi], gf, setup_.bcs[m][face][kBcVelocity],
+                               mats_[m].vel_FCME.at(face_axis(gf), pi));
+      }
+}
+
+// Step 4 (eq. 26.2-26.3, Uintah's explicit computeDelPressAndUpdatePressCC):
+//   delP = sum_m A(theta_m) / sum_m theta_m kappa_m,   kappa_m = v_m / c_m^2,
+// where A(theta_m) = sum of incoming minus outgoing fluxes of theta_m through
+// the faces with u*_m (the advection operator of step 10, so that
+// sum_m div(theta_m u_m) dt matches the advected volume), and
+//   press_CC = p_eq + delP, then the Pressure BC.
+void IceComponent::compute_delP_and_pressure(double dt) {
+  const Grid& g = setup_.grid;
+  delP_Dilatate_.fill(0.0);
+  sum_kappa_.fill(0.0);
+  for (std::size_t m = 0; m < mats_.size(); ++m) {
+    IceMaterialFields& f = mats_[m];
+    density_fluxes(g, setup_.advection, f.vol_frac_CC, f.vel_FCME, dt, flux_);
+    flux_divergence(g, flux_, dq_);
+    for (std::size_t pi = 0; pi < g.patches.size(); ++pi)
+      for_each_cell(g.patches[pi].cells(), [&](int i, int j, int k) {
+        const double c = f.speedSound_CC[pi](i, j, k);
+        sum_kappa_[pi](i, j, k) += f.vol_frac_CC[pi](i, j, k) * f.sp_vol_CC[pi](i, j, k) / (c * c);
+        delP_Dilatate_[pi](i, j, k) += dq_[pi](i, j, k);
+      });
+  }
+  for (std::size_t pi = 0; pi < g.patches.size(); ++pi) {
+    for_each_cell(g.patches[pi].cells(), [&](int i, int j, int k) {
+      delP_Dilatate_[pi](i, j, k) /= sum_kappa_[pi](i, j, k);
+      press_CC_[pi](i, j, k) = press_equil_CC_[pi](i, j, k) + delP_Dilatate_[pi](i, j, k);
+    });
+    for (int face = 0; face < 6; ++face)
+      apply_scalar_bc(g, g.patches[pi], static_cast<GridFace>(face), setup_.bcs[0][face][kBcPressure], press_CC_[pi]);
+  }
+  halo_->exchange(press_CC_);
+}
+
+// Step 5 (eq. 26.4): p* = (p_L rho_R + p_R rho_L)/(rho_L + rho_R), rho = sum_m rho_CC_m.
+void IceComponent::compute_face_pressure() {
+  const Grid& g = setup_.grid;
+  for (std::size_t pi = 0; pi < g.patches.size(); ++pi) {
+    for_each_cell(g.patches[pi].cells_with_extra(), [&](int i, int j, int k) {
+      double s = 0;
+      for (const IceMaterialFields& f : mats_) s += f.rho_CC[pi](i, j, k);
+      sum_rho_CC_[pi](i, j, k) = s;
+    });
+  }
+  halo_->exchange(sum_rho_CC_);
+  for (std::size_t pi = 0; pi < g.patches.size(); ++pi) {
+    const GridArray<double>& p = press_CC_[pi];
+    const GridArray<double>& rho = sum_rho_CC_[pi];
+    for (int d = 0; d < 3; ++d) {
+      GridArray<double>& pf = press_FC_.at(d, pi);
+      const IntVec3 e = IntVec3::Unit(d);
+      for_each_cell(faces_of(g.patches[pi], d), [&](int i, int j, int k) {
+        const IntVec3 R(i, j, k), L = R - e;
+        pf(R) = (p(L) * rho(R) + p(R) * rho(L)) / (rho(L) + rho(R));
+      });
+    }
+  }
+}
+
+// Steps 7-9 (eq. 26.5-26.14 without reactions, viscosity or conduction):
+//   mass_L = rho_CC V
+//   mom_L  = mass u + dt (-V theta grad p* + mass g)         grad p* from the face pressures
+//   eint_L = mass cv T + V theta kappa p delP                (= -dt V f_theta p sum div(theta u), eq. 26.7)
+//   exchange of u and T (Exchange.h), Tdot = (T_L^ME - T)/dt
+//   sp_vol_L = mass v - V theta kappa delP
+//              + dt V (theta beta Tdot - f_theta sum_s theta_s beta_s Tdot_s)   (eq. 26.13, Uintah)
+// The extra cells get mass rho_CC V and the BCs of the Lagrangian u, T, v.
+void IceComponent::lagrangian_values_and_exchange(double dt) {
+  const Grid& g = setup_.grid;
+  const std::size_t nm = mats_.size();
+  const double V = g.cell_volume();
+  for (std::size_t pi = 0; pi < g.patches.size(); ++pi) {
+    const Patch& patch = g.patches[pi];
+    // Momentum and energy sources, Lagrangian values.
+    for (std::size_t m = 0; m < nm; ++m) {
+      IceMaterialFields& f = mats_[m];
+      const double cv = setup_.materials[m].cv;
+      for_each_cell(patch.cells_with_extra(), [&](int i, int j, int k) {
+        mass_L_[m][pi](i, j, k) = f.rho_CC[pi](i, j, k) * V;
+      });
+      for_each_cell(patch.cells(), [&](int i, int j, int k) {
+        const IntVec3 c(i, j, k);
+        const double mass = mass_L_[m][pi](c);
+        const double theta = f.vol_frac_CC[pi](c);
+        Vec3 grad_p;
+        for (int d = 0; d < 3; ++d) {
+          const GridArray<double>& pf = press_FC_.at(d, pi);
+          grad_p[d] = (pf(IntVec3(c + IntVec3::Unit(d))) - pf(c)) / g.dx[d];
+        }
+        const Vec3 mom_L = mass * f.vel_CC[pi](c) + dt * (-V * theta * grad_p + mass * setup_.gravity);
+        const double ss = f.speedSound_CC[pi](c);
+        const double kappa = f.sp_vol_CC[pi](c) / (ss * ss);
+        const double eint_L = mass * cv * f.temp_CC[pi](c) + V * theta * kappa * press_CC_[pi](c) * delP_Dilatate_[pi](c);
+        vel_L_[m][pi](c) = mom_L / mass;
+        temp_L_[m][pi](c) = eint_L / (mass * cv);
+      });
+    }
+    // Momentum and heat exchange, cell by cell.
+    if (nm > 1) {
+      std::vector<double> inv_cv(nm);
+      for (std::size_t m = 0; m < nm; ++m) inv_cv[m] = 1.0 / setup_.materials[m].cv;
+      for_each_cell(patch.cells(), [&](int i, int j, int k) {
+        const IntVec3 c(i, j, k);
+        double theta[kMaxExchangeMaterials], sv[kMaxExchangeMaterials], ux[kMaxExchangeMaterials],
+            uy[kMaxExchangeMaterials], uz[kMaxExchangeMaterials], T[kMaxExchangeMaterials];
+        for (std::size_t m = 0; m < nm; ++m) {
+          theta[m] = mats_[m].vol_frac_CC[pi](c);
+          sv[m] = mats_[m].sp_vol_CC[pi](c);
+          const Vec3& u = vel_L_[m][pi](c);
+          ux[m] = u[0];
+          uy[m] = u[1];
+          uz[m] = u[2];
+          T[m] = temp_L_[m][pi](c);
+        }
+        solve_exchange3(dt, {theta, nm}, {sv, nm}, setup_.K, {ux, nm}, {uy, nm}, {uz, nm});
+        solve_exchange(dt, {theta, nm}, {sv, nm}, inv_cv, setup_.H, {T, nm});
+        for (std::size_t m = 0; m < nm; ++m) {
+          vel_L_[m][pi](c) = Vec3(ux[m], uy[m], uz[m]);
+          temp_L_[m][pi](c) = T[m];
+        }
+      });
+    }
+    // Specific volume (eq. 26.13). beta from the EOS, one call per material.
+    std::vector<std::vector<double>> beta_tdot(nm);
+    for (std::size_t m = 0; m < nm; ++m) {
+      const IceMaterialFields& f = mats_[m];
+      std::vector<double> beta(f.rho_micro_CC[pi].size());
+      setup_.materials[m].eos->thermal_expansivity({f.rho_micro_CC[pi].data(), beta.size()},
+                                                   {f.temp_CC[pi].data(), beta.size()}, beta);
+      beta_tdot[m] = std::move(beta);
+    }
+    for_each_cell(patch.cells(), [&](int i, int j, int k) {
+      const IntVec3 c(i, j, k);
+      const std::size_t off = press_CC_[pi].offset(i, j, k);
+      double sum_theta_kappa = 0, sum_therm = 0;
+      double theta_kappa[kMaxExchangeMaterials], therm[kMaxExchangeMaterials];
+      for (std::size_t m = 0; m < nm; ++m) {
+        const IceMaterialFields& f = mats_[m];
+        const double ss = f.speedSound_CC[pi](c);
+        theta_kappa[m] = f.vol_frac_CC[pi](c) * f.sp_vol_CC[pi](c) / (ss * ss);
+        const double tdot = (temp_L_[m][pi](c) - f.temp_CC[pi](c)) / dt;
+        therm[m] = f.vol_frac_CC[pi](c) * beta_tdot[m][off] * tdot;
+        sum_theta_kappa += theta_kappa[m];
+        sum_therm += therm[m];
+      }
+      for (std::size_t m = 0; m < nm; ++m) {
+        const IceMaterialFields& f = mats_[m];
+        const double mass = mass_L_[m][pi](c);
+        const double f_theta = theta_kappa[m] / sum_theta_kappa;
+        const double sp_vol_L = mass * f.sp_vol_CC[pi](c) - V * theta_kappa[m] * delP_Dilatate_[pi](c) +
+                                dt * V * (therm[m] - f_theta * sum_therm);
+        spv_L_[m][pi](c) = sp_vol_L / mass;
+      }
+    });
+  }
+  // Boundary values of the Lagrangian state; output copies.
+  for (std::size_t m = 0; m < nm; ++m) {
+    IceMaterialFields& f = mats_[m];
+    const double cv = setup_.materials[m].cv;
+    for (std::size_t pi = 0; pi < g.patches.size(); ++pi) {
+      const Patch& p = g.patches[pi];
+      for (int face = 0; face < 6; ++face) {
+        const GridFace gf = static_cast<GridFace>(face);
+        const auto& bc = setup_.bcs[m][face];
+        apply_vector_bc(g, p, gf, bc[kBcVelocity], vel_L_[m][pi]);
+        apply_scalar_bc(g, p, gf, bc[kBcTemperature], temp_L_[m][pi]);
+        if (bc[kBcSpecificVol].kind == BCKind::ComputeFromDensity) {
+          for_each_boundary_cell(g, p, gf, [&](const IntVec3& e, const IntVec3&) {
+            spv_L_[m][pi](e) = f.vol_frac_CC[pi](e) / f.rho_CC[pi](e);
+          });
+        } else {
+          apply_scalar_bc(g, p, gf, bc[kBcSpecificVol], spv_L_[m][pi]);
+        }
+      }
+      for_each_cell(p.cells_with_extra(), [&](int i, int j, int k) {
+        const double mass = mass_L_[m][pi](i, j, k);
+        f.mom_L_ME_CC[pi](i, j, k) = mass * vel_L_[m][pi](i, j, k);
+        f.eng_L_ME_CC[pi](i, j, k) = mass * cv * temp_L_[m][pi](i, j, k);
+      });
+    }
+    halo_->exchange(mass_L_[m]);
+    halo_->exchange(vel_L_[m]);
+    halo_->exchange(temp_L_[m]);
+    halo_->exchange(spv_L_[m]);
+  }
+}
+
+// Step 10-11: advection with the face velocities after exchange, then the
+// primitive variables rho = M/V, u = (Mu)/M, T = (M cv T)/(M cv), v = (Mv)/M
+// and the boundary conditions.
+void IceComponent::advect_and_advance(double dt, int step) {
+  const Grid& g = setup_.grid;
+  const double V = g.cell_volume();
+  for (std::size_t m = 0; m < mats_.size(); ++m) {
+    IceMaterialFields& f = mats_[m];
+    check_outflux(g, f.vel_FCME, dt, step);
+    // Mass first; its face fluxes carry the specific quantities.
+    density_fluxes(g, setup_.advection, mass_L_[m], f.vel_FCME, dt, flux_);
+    flux_divergence(g, flux_, dq_);
+    specific_fluxes(g, setup_.advection, vel_L_[m], f.vel_FCME, flux_, dt, flux_v_);
+    flux_divergence(g, flux_v_, dqv_);
+    for (std::size_t pi = 0; pi < g.patches.size(); ++pi)
+      for_each_cell(g.patches[pi].cells(), [&](int i, int j, int k) {
+        const double mass_L = mass_L_[m][pi](i, j, k);
+        const double mass = mass_L + dq_[pi](i, j, k);
+        mass_new_[pi](i, j, k) = mass;
+        f.rho_CC[pi](i, j, k) = mass / V;
+        f.vel_CC[pi](i, j, k) = (mass_L * vel_L_[m][pi](i, j, k) + dqv_[pi](i, j, k)) / mass;
+      });
+    // Temperature (c_v constant per material) and specific volume.
+    for (int q = 0; q < 2; ++q) {
+      const CellScalars& psi = q == 0 ? temp_L_[m] : spv_L_[m];
+      CellScalars& out = q == 0 ? f.temp_CC : f.sp_vol_CC;
+      specific_fluxes(g, setup_.advection, psi, f.vel_FCME, flux_, dt, flux2_);
+      flux_divergence(g, flux2_, dq_);
+      for (std::size_t pi = 0; pi < g.patches.size(); ++pi)
+        for_each_cell(g.patches[pi].cells(), [&](int i, int j, int k) {
+          out[pi](i, j, k) = (mass_L_[m][pi](i, j, k) * psi[pi](i, j, k) + dq_[pi](i, j, k)) / mass_new_[pi](i, j, k);
+        });
+    }
+    apply_state_bcs(m);
+  }
+}
+
+}  // namespace tephra

@@ -1,0 +1,76 @@
+// Point functions of the ICE step: ideal-gas EOS, equilibration pressure and
+// the implicit exchange, against closed forms.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+#include "ice/Equilibration.h"
+#include "ice/Exchange.h"
+#include "models/eos/IdealGas.h"
+
+namespace tephra {
+namespace {
+
+// c^2 = gamma p / rho; dp/drho|_e and dp/de against central differences of
+// p(rho, e) = (gamma-1) rho e; rho(p, T) inverts p(rho, T).
+TEST(EosIdealGas, ClosedFormsAndDerivatives) {
+  const IdealGas g(1.4, 717.5);
+  const double rho = 1.2, T = 300, e = 717.5 * T;
+  const EosState s = g.at(rho, T);
+  EXPECT_DOUBLE_EQ(s.p, 0.4 * rho * e);
+  EXPECT_NEAR(s.c2, 1.4 * s.p / rho, 1e-12 * s.c2);
+  const double h = 1e-6 * rho;
+  EXPECT_NEAR(s.dp_drho, (IdealGas::state(1.4, 717.5, rho + h, T).p - IdealGas::state(1.4, 717.5, rho - h, T).p) / (2 * h),
+              1e-8 * s.dp_drho);
+  EXPECT_NEAR(s.dp_de, 0.4 * rho, 1e-14);
+  EXPECT_NEAR(g.density_at(s.p, T), rho, 1e-14 * rho);
+  EXPECT_DOUBLE_EQ(g.thermal_expansivity_at(rho, T), 1.0 / T);
+}
+
+// Two ideal gases: theta_m = rho_CC_m (g_m - 1) cv_m T_m / p, so sum theta = 1
+// gives p = sum_m rho_CC_m (g_m - 1) cv_m T_m exactly (Dalton).
+TEST(IceEquilibration, TwoIdealGasesGiveDaltonsPressure) {
+  const IdealGas a(1.4, 717.5), b(1.289, 652.9);
+  std::vector<double> rA = {0.6, 1e-12}, TA = {300, 300}, rB = {0.9, 1.79}, TB = {400, 400};
+  std::vector<double> mA = {1.0, 1.0}, mB = {1.0, 2.0}, thA(2), thB(2), cA(2), cB(2), p = {101325, 101325};
+  std::vector<EquilibrationMaterial> mats = {{&a, rA, TA, mA, thA, cA}, {&b, rB, TB, mB, thB, cB}};
+  const EquilibrationResult r = equilibrate_pressure(mats, p, 100);
+  ASSERT_TRUE(r.converged);
+  for (int i = 0; i < 2; ++i) {
+    const double exact = rA[i] * 0.4 * 717.5 * TA[i] + rB[i] * 0.289 * 652.9 * TB[i];
+    EXPECT_NEAR(p[i], exact, 1e-10 * exact);
+    EXPECT_NEAR(thA[i] + thB[i], 1.0, 1e-12);
+  }
+}
+
+// Two materials, scalar exchange (inventory ch. 24 oracle):
+//   x1' = ((1+b21) x1 + b12 x2) / ((1+b12)(1+b21) - b12 b21), b_mn = dt theta_n K v_m,
+// and the mass-weighted sum M_m x_m (M_m = V theta_m / v_m) is conserved.
+TEST(IceExchange, TwoMaterialClosedFormAndConservation) {
+  const double dt = 1e-4, K = 3e5;
+  std::vector<double> theta = {0.3, 0.7}, v = {0.8, 1.0 / 1.2}, C = {0, K, K, 0}, x = {10.0, -2.0};
+  const double b12 = dt * theta[1] * K * v[0], b21 = dt * theta[0] * K * v[1];
+  const double det = (1 + b12) * (1 + b21) - b12 * b21;
+  const double x1 = ((1 + b21) * 10.0 + b12 * -2.0) / det, x2 = ((1 + b12) * -2.0 + b21 * 10.0) / det;
+  const double before = theta[0] / v[0] * 10.0 + theta[1] / v[1] * -2.0;
+  solve_exchange(dt, theta, v, {}, C, x);
+  EXPECT_NEAR(x[0], x1, 1e-13 * std::abs(x1));
+  EXPECT_NEAR(x[1], x2, 1e-13 * std::abs(x1));
+  EXPECT_NEAR(theta[0] / v[0] * x[0] + theta[1] / v[1] * x[1], before, 1e-13 * std::abs(before));
+}
+
+// K -> infinity (1e15): one common velocity, sum theta rho u / sum theta rho.
+TEST(IceExchange, StiffLimitGivesTheMassWeightedVelocity) {
+  std::vector<double> theta = {0.25, 0.75}, v = {1.0 / 8000.0, 1.0 / 1.2}, C = {0, 1e15, 1e15, 0};
+  std::vector<double> ux = {0.0, 0.0}, uy = {5.0, -1.0}, uz = {0.0, 3.0};
+  const double w0 = theta[0] / v[0], w1 = theta[1] / v[1];
+  const double mix = (w0 * 5.0 + w1 * -1.0) / (w0 + w1);
+  solve_exchange3(1e-3, theta, v, C, ux, uy, uz);
+  EXPECT_NEAR(uy[0], mix, 1e-9);
+  EXPECT_NEAR(uy[1], mix, 1e-9);
+  EXPECT_NEAR(ux[0], 0.0, 1e-12);
+}
+
+}  // namespace
+}  // namespace tephra
