@@ -16,10 +16,16 @@ namespace tephra {
 void set_thread_count(int n);
 int thread_count();
 
+// Below this many cells a parallel region costs more than it saves (measured:
+// a 250-cell shock tube ran 2x slower with two threads), so small boxes run
+// on the calling thread.
+inline constexpr long long kMinCellsPerParallelLoop = 8192;
+
 template <class Kernel>
 void for_each_cell(const IndexRange& r, Kernel&& kernel) {
   const int k0 = r.lo[2], k1 = r.hi[2], j0 = r.lo[1], j1 = r.hi[1], i0 = r.lo[0], i1 = r.hi[0];
-#pragma omp parallel for collapse(2) schedule(static)
+  const long long cells = 1LL * (k1 - k0) * (j1 - j0) * (i1 - i0);
+#pragma omp parallel for collapse(2) schedule(static) if (cells >= kMinCellsPerParallelLoop)
   for (int k = k0; k < k1; ++k)
     for (int j = j0; j < j1; ++j)
       for (int i = i0; i < i1; ++i) kernel(i, j, k);

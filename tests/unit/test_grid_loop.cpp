@@ -19,7 +19,8 @@ namespace {
 void expect_each_index_once(int threads) {
   set_thread_count(threads);
   EXPECT_EQ(thread_count(), threads);
-  const IndexRange r{IntVec3(-2, 3, -1), IntVec3(7, 11, 6)};  // 9 x 8 x 7, negative starts too
+  const IndexRange r{IntVec3(-2, 3, -1), IntVec3(27, 31, 14)};  // 29 x 28 x 15, negative starts too
+  ASSERT_GE(r.size(), kMinCellsPerParallelLoop);              // large enough to run in parallel
   const IntVec3 e = r.extent();
   std::vector<std::atomic<int>> visits(static_cast<size_t>(r.size()));
   for (auto& v : visits) v = 0;
@@ -35,7 +36,7 @@ void expect_each_index_once(int threads) {
   });
   for (const auto& v : visits) ASSERT_EQ(v.load(), 1);
 #ifdef _OPENMP
-  // 56 (k,j) pairs shared statically among the threads: each thread gets some.
+  // 420 (k,j) pairs shared statically among the threads: each thread gets some.
   EXPECT_EQ(max_thread.load(), threads - 1);
 #endif
 }
@@ -50,4 +51,15 @@ TEST(GridLoop, EmptyRangeRunsNothingAndBadThreadCountIsUsageError) {
   for_each_cell(IndexRange{IntVec3(0, 0, 0), IntVec3(3, 0, 3)}, [&](int, int, int) { ++calls; });
   EXPECT_EQ(calls, 0);
   EXPECT_THROW(set_thread_count(0), UsageError);
+}
+
+TEST(GridLoop, SmallRangesRunOnTheCallingThread) {
+  set_thread_count(2);
+  bool all_on_master = true;
+  for_each_cell(IndexRange{IntVec3(0, 0, 0), IntVec3(10, 10, 10)}, [&](int, int, int) {
+#ifdef _OPENMP
+    if (omp_get_thread_num() != 0) all_on_master = false;
+#endif
+  });
+  EXPECT_TRUE(all_on_master);
 }
