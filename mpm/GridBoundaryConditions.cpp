@@ -60,15 +60,19 @@ GridBoundaryConditions parse_grid_boundary_conditions(const DeckNode* bcs, int m
 }
 
 void GridBoundaryConditions::apply(const NodeGrid& g, std::vector<Vec3>& velocity) const {
-  // Visits every node of face f (direction d = f/2; plane index 0 or n_d - 1).
+  // Visits every node of face f (direction d = f/2): the node plane on the
+  // domain face (index extra_d or n_d - 1 - extra_d), over the domain's nodes
+  // in the other two directions. As Vaango (Patch::FaceNodes: the face nodes
+  // of the patch without its extra cells), the nodes of the extra cells are
+  // left free.
   auto for_face = [&](int f, auto&& fn) {
     const int d = f / 2;
-    const int plane = (f % 2 == 0) ? 0 : g.n[d] - 1;
+    const int plane = (f % 2 == 0) ? g.extra[d] : g.n[d] - 1 - g.extra[d];
     const int a = (d + 1) % 3, b = (d + 2) % 3;
     IntVec3 c;
     c[d] = plane;
-    for (int jb = 0; jb < g.n[b]; ++jb)
-      for (int ja = 0; ja < g.n[a]; ++ja) {
+    for (int jb = g.extra[b]; jb < g.n[b] - g.extra[b]; ++jb)
+      for (int ja = g.extra[a]; ja < g.n[a] - g.extra[a]; ++ja) {
         c[a] = ja;
         c[b] = jb;
         fn(velocity[g.index(c)], d);

@@ -4,6 +4,7 @@
 #include <map>
 
 #include "models/ModelParameters.h"
+#include "models/solid/CnhMms.h"
 #include "models/solid/CompNeoHookean.h"
 #include "models/solid/ConstitutiveModel.h"
 
@@ -14,6 +15,7 @@ using Creator = std::function<ConstitutiveModelP(const ModelParameters&)>;
 
 const std::map<std::string, Creator>& creators() {
   static const std::map<std::string, Creator> table = {
+      {"cnh_mms", &CnhMms::create},
       {"comp_neo_hook", &CompNeoHookean::create},
   };
   return table;
