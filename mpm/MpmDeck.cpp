@@ -139,6 +139,8 @@ std::unique_ptr<MpmComponent> make_mpm_component(const Deck& deck) {
   if (setup.materials.empty()) mpm.fail("<MaterialProperties><MPM> has no <material>");
   for (MpmMaterial& m : setup.materials)
     m.bcs = parse_grid_boundary_conditions(grid_node.child("BoundaryConditions"), m.index);
+  for (MpmMaterial& m : setup.materials)
+    m.bcs.set_extra_nodes = setup.flags.interpolator.kind != InterpolatorKind::Linear;
   if (!setup.flags.mms.empty()) attach_manufactured_solution(root.require_child("MPM"), setup);
   return std::make_unique<MpmComponent>(std::move(setup));
 }

@@ -15,7 +15,7 @@ namespace {
 // valid value.
 const char* const kNoEffect[] = {
     "withColor", "boundary_traction_faces", "computeScaleFactor", "computeNodalHeatFlux",
-    "DoExplicitHeatConduction", "DoTransientImplicitHeatConduction", "DoThermalExpansion",
+    "DoExplicitHeatConduction", "do_explicit_heat_conduction", "DoTransientImplicitHeatConduction", "DoThermalExpansion",
     "do_contact_friction_heating", "interpolateParticleTempToGridEveryStep", "testForNegTemps_mpm",
     "minimum_particle_mass", "maximum_particle_velocity", "min_grid_level", "max_grid_level",
     "artificial_viscosity_coeff1", "artificial_viscosity_coeff2", "CanAddMPMMaterial",

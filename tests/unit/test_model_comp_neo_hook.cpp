@@ -151,7 +151,7 @@ TEST(ModelCompNeoHook, RegistryCreatesAndValidates) {
   EXPECT_EQ(m->bulk_modulus(), 833.3);
   EXPECT_EQ(m->shear_modulus(), 384.6);
   EXPECT_EQ(create_constitutive_model("no_such_model", p), nullptr);
-  EXPECT_EQ(constitutive_model_types(), std::vector<std::string>{"comp_neo_hook"});
+  EXPECT_EQ(constitutive_model_types(), (std::vector<std::string>{"cnh_mms", "comp_neo_hook"}));
   p.values["shear_modulus"] = -1;
   EXPECT_THROW(create_constitutive_model("comp_neo_hook", p), std::invalid_argument);
   p.values["shear_modulus"] = 384.6;
