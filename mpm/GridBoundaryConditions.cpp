@@ -60,26 +60,57 @@ GridBoundaryConditions parse_grid_boundary_conditions(const DeckNode* bcs, int m
 }
 
 void GridBoundaryConditions::apply(const NodeGrid& g, std::vector<Vec3>& velocity) const {
-  // Visits every node of face f (direction d = f/2; plane index 0 or n_d - 1).
+  // Visits every node of face f (direction d = f/2): the node plane on the
+  // domain face (index extra_d or n_d - 1 - extra_d), over the domain's nodes
+  // in the other two directions. As Vaango (Patch::FaceNodes: the face nodes
+  // of the patch without its extra cells), the nodes of the extra cells are
+  // left free.
   auto for_face = [&](int f, auto&& fn) {
     const int d = f / 2;
-    const int plane = (f % 2 == 0) ? 0 : g.n[d] - 1;
+    const int plane = (f % 2 == 0) ? g.extra[d] : g.n[d] - 1 - g.extra[d];
     const int a = (d + 1) % 3, b = (d + 2) % 3;
     IntVec3 c;
     c[d] = plane;
-    for (int jb = 0; jb < g.n[b]; ++jb)
-      for (int ja = 0; ja < g.n[a]; ++ja) {
+    for (int jb = g.extra[b]; jb < g.n[b] - g.extra[b]; ++jb)
+      for (int ja = g.extra[a]; ja < g.n[a] - g.extra[a]; ++ja) {
         c[a] = ja;
         c[b] = jb;
         fn(velocity[g.index(c)], d);
       }
   };
+  // Visits the extra-node planes of face f over all nodes of the other two
+  // directions: fn(v_extra, v_mirror, d) with the mirror node across the face.
+  auto for_extra = [&](int f, auto&& fn) {
+    const int d = f / 2;
+    const int a = (d + 1) % 3, b = (d + 2) % 3;
+    const int face_plane = (f % 2 == 0) ? g.extra[d] : g.n[d] - 1 - g.extra[d];
+    const int dir = (f % 2 == 0) ? -1 : 1;  // outward
+    for (int k = 1; k <= g.extra[d]; ++k) {
+      IntVec3 c, m;
+      c[d] = face_plane + dir * k;
+      m[d] = face_plane - dir * k;
+      for (int jb = 0; jb < g.n[b]; ++jb)
+        for (int ja = 0; ja < g.n[a]; ++ja) {
+          c[a] = m[a] = ja;
+          c[b] = m[b] = jb;
+          fn(velocity[g.index(c)], velocity[g.index(m)], d);
+        }
+    }
+  };
   for (int f = 0; f < 6; ++f)
-    if (face[f].kind == FaceVelocityBC::Kind::Velocity)
+    if (face[f].kind == FaceVelocityBC::Kind::Velocity) {
       for_face(f, [&](Vec3& v, int) { v = face[f].value; });
+      if (set_extra_nodes) for_extra(f, [&](Vec3& v, const Vec3&, int) { v = face[f].value; });
+    }
   for (int f = 0; f < 6; ++f)
-    if (face[f].kind == FaceVelocityBC::Kind::Symmetry)
+    if (face[f].kind == FaceVelocityBC::Kind::Symmetry) {
       for_face(f, [&](Vec3& v, int d) { v[d] = 0.0; });
+      if (set_extra_nodes)
+        for_extra(f, [&](Vec3& v, const Vec3& mirror, int d) {
+          v = mirror;
+          v[d] = -mirror[d];
+        });
+    }
 }
 
 }  // namespace tephra

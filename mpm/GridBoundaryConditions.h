@@ -24,6 +24,11 @@ struct FaceVelocityBC {
 struct GridBoundaryConditions {
   // faces: 0 x-, 1 x+, 2 y-, 3 y+, 4 z-, 5 z+
   std::array<FaceVelocityBC, 6> face;
+  // GIMP, CPDI and B-spline supports reach the extra-cell nodes; Vaango
+  // (MPMBoundCond::setBoundaryCondition) then also sets those: a Velocity face
+  // gives them the value, a symmetry face mirrors the interior, node
+  // face - k = reflection of node face + k (normal component negated).
+  bool set_extra_nodes = false;
 
   // Sets the nodes on each face: Velocity -> v = value, Symmetry -> v_normal = 0.
   // As in Vaango, all Velocity faces are applied first, then all symmetry faces,

@@ -20,6 +20,7 @@ MpmComponent::MpmComponent(MpmSetup setup) : setup_(std::move(setup)) {
     m.grid.origin = g.lower - (g.extra_cells.cast<double>().array() * g.dx.array()).matrix();
     m.grid.h = g.dx;
     m.grid.n = g.cells + 2 * g.extra_cells + IntVec3::Ones();
+    m.grid.extra = g.extra_cells;
     m.grid.reset();
   }
 }
@@ -29,6 +30,7 @@ void MpmComponent::initialize() {
   for (MpmMaterial& m : setup_.materials) {
     m.particles = Particles{};
     seed_particles(setup_.grid, m.sources, m.density, m.particles, next_id);
+    if (m.mms) initialize_mms_particles(*m.mms, m.particles);  // x = X + u(X,0), v, F at t = 0
     // The model's history columns at their declared initial values.
     m.particles.history.clear();
     for (const HistoryVariable& h : m.model->history()) {
@@ -46,6 +48,7 @@ void MpmComponent::initialize() {
   // model's computeStableTimestep at initialization, c(F = I) and v_0).
   stable_dt_ = std::numeric_limits<double>::infinity();
   for (const MpmMaterial& m : setup_.materials) stable_dt_ = std::min(stable_dt_, material_stable_timestep(m));
+  time_ = 0.0;
 }
 
 // Vaango's explicit rule (UCNH::computeStressTensor, called by SerialMPM's
@@ -81,7 +84,7 @@ void MpmComponent::fail_particle(const MpmMaterial& m, std::size_t i, int step, 
 void MpmComponent::project_to_grid(MpmMaterial& m, int step, const char* phase) {
   {
     PhaseTimers::Scope t(phase_timers(), "MPM: interpolate particles to grid");
-    const long bad = compute_stencils(m.particles, m.grid, m.stencils);
+    const long bad = compute_stencils(m.particles, m.grid, setup_.flags.interpolator, m.stencils);
     if (bad >= 0) fail_particle(m, std::size_t(bad), step, phase, "particle is outside the grid");
     m.grid.reset();
     particles_to_grid(m.particles, m.stencils, setup_.gravity, m.grid);
@@ -125,8 +128,12 @@ void MpmComponent::update_stress(MpmMaterial& m, int step, double dt) {
 }
 
 // One explicit USL step of one material (Vaango theory manual §1.5, Alg. 2).
-void MpmComponent::advance_material(MpmMaterial& m, double dt, int step) {
+void MpmComponent::advance_material(MpmMaterial& m, double t, double dt, int step) {
   Particles& p = m.particles;
+  if (m.mms) {
+    PhaseTimers::Scope timer(phase_timers(), "MPM: apply external loads");
+    apply_mms_body_force(*m.mms, t, p);  // f_ext,p = m_p b(X_p, t_n)  (Vaango: at the step's start time)
+  }
   project_to_grid(m, step, "interpolate particles to grid");  // m_g, v_g (+BC), f_ext, f_int
   {
     PhaseTimers::Scope t(phase_timers(), "MPM: integrate grid acceleration");
@@ -159,12 +166,20 @@ void MpmComponent::advance_material(MpmMaterial& m, double dt, int step) {
   }
 }
 
-void MpmComponent::advance(double /*t*/, double dt, int step) {
+void MpmComponent::advance(double t, double dt, int step) {
   stable_dt_ = std::numeric_limits<double>::infinity();
-  for (MpmMaterial& m : setup_.materials) advance_material(m, dt, step);
+  for (MpmMaterial& m : setup_.materials) advance_material(m, t, dt, step);
+  time_ = t + dt;
 }
 
-std::vector<std::string> mpm_interpolators() { return {"linear"}; }
+double MpmComponent::mms_displacement_error() const {
+  double e2 = 0.0;
+  for (const MpmMaterial& m : setup_.materials)
+    if (m.mms) e2 += std::pow(mms_displacement_error_l2(*m.mms, m.particles, time_), 2);
+  return std::sqrt(e2);
+}
+
+std::vector<std::string> mpm_interpolators() { return {"linear", "gimp", "cpdi", "3rdorderBS"}; }
 std::vector<std::string> mpm_contact_types() { return {"null"}; }
 
 }  // namespace tephra

@@ -1,6 +1,6 @@
 #pragma once
-// The explicit MPM component (update-stress-last, linear shape functions,
-// null contact: each material moves on its own grid field). See advance() in
+// The explicit MPM component (update-stress-last, the interpolator of
+// <MPM><interpolator>, null contact: each material moves on its own grid field). See advance() in
 // MpmComponent.cpp for the step, one named phase per line.
 #include <limits>
 #include <memory>
@@ -15,7 +15,8 @@
 #include "mpm/NodeGrid.h"
 #include "mpm/ParticleSeeding.h"
 #include "mpm/Particles.h"
-#include "mpm/ShapeLinear.h"
+#include "mpm/mms/ManufacturedSolution.h"
+#include "mpm/shape/Interpolator.h"
 
 namespace tephra {
 
@@ -32,7 +33,8 @@ struct MpmMaterial {
 
   Particles particles;
   NodeGrid grid;                        // this step's node fields (and g.* output)
-  std::vector<LinearStencil> stencils;  // scratch of the step
+  std::shared_ptr<const ManufacturedSolution> mms;  // <run_MMS_problem>, or null
+  Stencils stencils;                    // scratch of the step
   std::vector<Mat3> L;                  // velocity gradients of the step
   std::vector<Mat3> F_old;              // F_n of the step (the model's input)
   std::vector<double> plastic_work;     // model outputs of the step: dissipated work per V0 [J/m^3]
@@ -61,11 +63,15 @@ class MpmComponent final : public Component {
   void load_state(const StateArchive& archive) override;
 
   const Grid& grid() const { return setup_.grid; }
+  // L2 displacement error against the manufactured solution of each material
+  // (reduction label MMSDisplacementErrorL2); 0 without <run_MMS_problem>.
+  double mms_displacement_error() const;
+
   const std::vector<MpmMaterial>& materials() const { return setup_.materials; }
   std::vector<MpmMaterial>& materials() { return setup_.materials; }
 
  private:
-  void advance_material(MpmMaterial& m, double dt, int step);
+  void advance_material(MpmMaterial& m, double t, double dt, int step);
   double material_stable_timestep(const MpmMaterial& m) const;
   void project_to_grid(MpmMaterial& m, int step, const char* phase);
   void update_stress(MpmMaterial& m, int step, double dt);
@@ -75,6 +81,7 @@ class MpmComponent final : public Component {
   // Stable step for the next advance(), set by the last stress update from
   // c(F_{n+1}) and v_n (Vaango's order); part of the restart state.
   double stable_dt_ = std::numeric_limits<double>::infinity();
+  double time_ = 0.0;  // time of the particle state (for the MMS error)
 };
 
 // Reads the MPM parts of the deck (<MPM>, <PhysicalConstants>, <MaterialProperties><MPM>,
@@ -82,7 +89,7 @@ class MpmComponent final : public Component {
 std::unique_ptr<MpmComponent> make_mpm_component(const Deck& deck);
 
 // Registries for `tephra --list`.
-std::vector<std::string> mpm_interpolators();  // {"linear"}
+std::vector<std::string> mpm_interpolators();  // {"linear", "gimp", "cpdi", "3rdorderBS"}
 std::vector<std::string> mpm_contact_types();  // {"null"}
 
 }  // namespace tephra

@@ -9,11 +9,11 @@ namespace {
 
 const char* const kParticleLabels[] = {"p.x", "p.particleID", "p.volume", "p.velocity", "p.stress",
                                        "p.mass", "p.deformationMeasure", "p.displacement",
-                                       "p.temperature", "p.color", "p.externalforce"};
+                                       "p.temperature", "p.color", "p.externalforce", "p.size"};
 const char* const kNodeLabels[] = {"g.mass", "g.volume", "g.velocity", "g.velocity_star", "g.acceleration",
                                    "g.externalforce", "g.internalforce", "g.stressFS"};
 const char* const kReductionLabels[] = {"KineticEnergy", "StrainEnergy", "TotalMass", "TotalMomentum",
-                                        "CenterOfMassPosition"};
+                                        "CenterOfMassPosition", "MMSDisplacementErrorL2"};
 
 void append(std::vector<double>& out, double v) { out.push_back(v); }
 void append(std::vector<double>& out, const Vec3& v) { out.insert(out.end(), v.data(), v.data() + 3); }
@@ -67,6 +67,7 @@ void for_each_column(P& p, G& g, Fn&& fn) {
   fn("external_force", p.external_force);
   fn("F", p.F);
   fn("stress", p.stress);
+  fn("size", p.psize);
   fn("mass", p.mass);
   fn("volume", p.volume);
   fn("volume0", p.volume0);
@@ -116,6 +117,7 @@ void MpmComponent::fill_output(const std::set<std::string>& labels, OutputFrame&
     if (want("p.temperature")) b.fields.push_back(field("p.temperature", m.index, p.temperature));
     if (want("p.color")) b.fields.push_back(field("p.color", m.index, p.color));
     if (want("p.externalforce")) b.fields.push_back(field("p.externalforce", m.index, p.external_force));
+    if (want("p.size")) b.fields.push_back(field("p.size", m.index, p.psize));
     // The model's history columns, p.<name>, as declared (already flat).
     const std::vector<HistoryVariable> hist = m.model->history();
     for (std::size_t k = 0; k < hist.size(); ++k) {
@@ -172,6 +174,9 @@ std::map<std::string, std::vector<double>> MpmComponent::reductions(const std::s
   if (labels.count("StrainEnergy")) out["StrainEnergy"] = {se};
   if (labels.count("TotalMass")) out["TotalMass"] = {mass};
   if (labels.count("TotalMomentum")) out["TotalMomentum"] = {mom[0], mom[1], mom[2]};
+  // sqrt(sum V0 |u_p - u_exact(X_p, t)|^2 / sum V0) with <run_MMS_problem>
+  // (a Tephra label: Vaango computes this error in post-processing scripts).
+  if (labels.count("MMSDisplacementErrorL2")) out["MMSDisplacementErrorL2"] = {mms_displacement_error()};
   if (labels.count("CenterOfMassPosition")) {
     const Vec3 c = mass > 0 ? Vec3(mx / mass) : Vec3::Zero();
     out["CenterOfMassPosition"] = {c[0], c[1], c[2]};
@@ -188,6 +193,7 @@ void MpmComponent::save_state(StateArchive& a) const {
     for (std::size_t k = 0; k < hist.size(); ++k) a.put(pre + "history." + hist[k].name, m.particles.history[k]);
   }
   a.put_scalar("mpm.stable_dt", stable_dt_);
+  a.put_scalar("mpm.time", time_);
 }
 
 void MpmComponent::load_state(const StateArchive& a) {
@@ -211,6 +217,7 @@ void MpmComponent::load_state(const StateArchive& a) {
                                   " have inconsistent sizes");
   }
   stable_dt_ = a.scalar("mpm.stable_dt");
+  time_ = a.scalar("mpm.time");
 }
 
 }  // namespace tephra

@@ -5,7 +5,9 @@
 #include "core/deck/DeckNode.h"
 #include "core/geometry/GeometryPiece.h"
 #include "mpm/DeckModelParameters.h"
+#include "models/solid/CnhMms.h"
 #include "mpm/MpmComponent.h"
+#include "mpm/mms/ManufacturedSolution.h"
 
 namespace tephra {
 
@@ -84,6 +86,26 @@ void check_contact(const DeckNode& contact) {
   type.fail("unknown MPM contact type '" + type.text + "'");
 }
 
+// <run_MMS_problem>: every material must be cnh_mms (the body forces are
+// derived for its stress law).
+void attach_manufactured_solution(const DeckNode& mpm_flags, MpmSetup& setup) {
+  const DeckNode& node = mpm_flags.require_child("run_MMS_problem");
+  const auto& vaango = vaango_mms_names();
+  const std::string& name = setup.flags.mms;
+  if (std::find(vaango.begin(), vaango.end(), name) == vaango.end())
+    node.fail("unknown run_MMS_problem '" + name + "' (Vaango's: " + join(vaango) + ")");
+  for (MpmMaterial& m : setup.materials) {
+    const auto* cnh = dynamic_cast<const CnhMms*>(m.model.get());
+    if (!cnh)
+      node.fail("run_MMS_problem '" + name + "' needs constitutive_model type 'cnh_mms' (its body force is "
+                "derived for that stress law); material " + std::to_string(m.index) + " is '" +
+                m.model->type() + "'");
+    m.mms = make_mms(name, cnh->params(), m.density);
+    if (!m.mms)
+      node.missing_feature("run_MMS_problem '" + name + "' (implemented: " + join(implemented_mms_names()) + ")");
+  }
+}
+
 }  // namespace
 
 std::unique_ptr<MpmComponent> make_mpm_component(const Deck& deck) {
@@ -91,11 +113,15 @@ std::unique_ptr<MpmComponent> make_mpm_component(const Deck& deck) {
   MpmSetup setup;
   const DeckNode& grid_node = root.require_child("Grid");
   setup.grid = make_grid(grid_node);
-  if ((setup.grid.extra_cells.array() != 0).any())
-    grid_node.missing_feature("MPM with extraCells != 0 (boundary nodes in extra cells)");
   if ((setup.grid.periodic.array() != 0).any()) grid_node.missing_feature("MPM with periodic boundaries");
 
   setup.flags = parse_mpm_flags(root.child("MPM"));
+  // GIMP, CPDI and B-spline supports reach past the particle's cell: a
+  // particle near a domain face weights the node layer of the extra cells.
+  if (setup.flags.interpolator.kind != InterpolatorKind::Linear && (setup.grid.extra_cells.array() < 1).any())
+    grid_node.fail("the MPM interpolator '" + interpolator_name(setup.flags.interpolator.kind) +
+                   "' needs <extraCells> >= 1 in every direction (its support reaches the node layer "
+                   "outside the domain)");
   if (const DeckNode* pc = root.child("PhysicalConstants")) setup.gravity = pc->get_vec3("gravity", Vec3::Zero());
 
   const DeckNode& props = root.require_child("MaterialProperties");
@@ -113,6 +139,9 @@ std::unique_ptr<MpmComponent> make_mpm_component(const Deck& deck) {
   if (setup.materials.empty()) mpm.fail("<MaterialProperties><MPM> has no <material>");
   for (MpmMaterial& m : setup.materials)
     m.bcs = parse_grid_boundary_conditions(grid_node.child("BoundaryConditions"), m.index);
+  for (MpmMaterial& m : setup.materials)
+    m.bcs.set_extra_nodes = setup.flags.interpolator.kind != InterpolatorKind::Linear;
+  if (!setup.flags.mms.empty()) attach_manufactured_solution(root.require_child("MPM"), setup);
   return std::make_unique<MpmComponent>(std::move(setup));
 }
 

@@ -15,7 +15,7 @@ namespace {
 // valid value.
 const char* const kNoEffect[] = {
     "withColor", "boundary_traction_faces", "computeScaleFactor", "computeNodalHeatFlux",
-    "DoExplicitHeatConduction", "DoTransientImplicitHeatConduction", "DoThermalExpansion",
+    "DoExplicitHeatConduction", "do_explicit_heat_conduction", "DoTransientImplicitHeatConduction", "DoThermalExpansion",
     "do_contact_friction_heating", "interpolateParticleTempToGridEveryStep", "testForNegTemps_mpm",
     "minimum_particle_mass", "maximum_particle_velocity", "min_grid_level", "max_grid_level",
     "artificial_viscosity_coeff1", "artificial_viscosity_coeff2", "CanAddMPMMaterial",
@@ -26,7 +26,6 @@ const char* const kNoEffect[] = {
 const std::map<std::string, std::string>& physics_defaults() {
   static const std::map<std::string, std::string> table = {
       {"time_integrator", "explicit"},
-      {"interpolator", "linear"},
       {"axisymmetric", "false"},
       {"artificial_damping_coeff", "0"},
       {"artificial_viscosity", "false"},
@@ -80,12 +79,31 @@ MpmFlags parse_mpm_flags(const DeckNode* mpm) {
       c.fail("time_integrator must be explicit, implicit or fracture, not '" + c.text + "'");
     }
     if (c.name == "interpolator") {
-      if (c.text == "linear") continue;
-      static const char* known[] = {"gimp", "cpdi", "cpti", "3rdorderBS", "4thorderBS", "fast_cpdi",
-                                    "axisym_cpdi", "axisym_linear", "axisym_gimp"};
+      bool found = false;
+      for (InterpolatorKind k : {InterpolatorKind::Linear, InterpolatorKind::Gimp, InterpolatorKind::Cpdi,
+                                 InterpolatorKind::QuadraticBspline})
+        if (c.text == interpolator_name(k)) {
+          flags.interpolator.kind = k;
+          found = true;
+        }
+      if (found) continue;
+      static const char* known[] = {"cpti", "4thorderBS", "fast_cpdi", "axisym_cpdi", "axisym_cpti",
+                                    "axisym_linear", "axisym_gimp", "fast_axisym_cpdi"};
       for (const char* k : known)
-        if (c.text == k) c.missing_feature("MPM interpolator '" + c.text + "' (only linear is implemented)");
-      c.fail("unknown MPM interpolator '" + c.text + "'");
+        if (c.text == k)
+          c.missing_feature("MPM interpolator '" + c.text +
+                            "' (implemented: linear, gimp, cpdi, 3rdorderBS)");
+      c.fail("unknown MPM interpolator '" + c.text + "' (implemented: linear, gimp, cpdi, 3rdorderBS)");
+    }
+    if (c.name == "cpdi_lcrit") {
+      flags.interpolator.cpdi_lcrit = c.as_double();
+      if (!(flags.interpolator.cpdi_lcrit > 0.0)) c.fail("cpdi_lcrit must be > 0");
+      continue;
+    }
+    if (c.name == "run_MMS_problem") {
+      // Checked against the implemented solutions in make_mpm_component.
+      if (c.text != "none") flags.mms = c.text;
+      continue;
     }
     if (c.name == "erosion" || c.name == "deformation_gradient") {
       // <erosion algorithm="none"/>, <deformation_gradient algorithm="first_order"/>

@@ -1,17 +1,21 @@
 #pragma once
-// The <MPM> flags block. Only explicit time integration with linear shape
-// functions is implemented; every other flag must either leave the physics
+// The <MPM> flags block. Explicit time integration with the interpolators
+// linear, gimp, cpdi and 3rdorderBS, and the manufactured solutions
+// AxisAligned and GeneralizedVortex are implemented; every other flag must either leave the physics
 // of what is implemented unchanged or hold Vaango's default value. Anything
 // else is a MissingFeature naming the flag (never silently ignored).
+#include <string>
+
+#include "mpm/shape/Interpolator.h"
+
 namespace tephra {
 
 class DeckNode;
 
 struct MpmFlags {
-  // Nothing to store yet: explicit + linear are the only accepted values.
-  // Kept as a struct so later slices (GIMP, damping, ...) add fields here.
   bool explicit_integrator = true;
-  bool linear_interpolator = true;
+  InterpolatorSpec interpolator;  // <interpolator>, <cpdi_lcrit>
+  std::string mms;                // <run_MMS_problem>, empty = none
 };
 
 // Reads <MPM> (may be null: all defaults).

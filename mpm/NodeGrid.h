@@ -12,6 +12,8 @@ struct NodeGrid {
   Vec3 origin = Vec3::Zero();  // position of node (0,0,0)
   Vec3 h = Vec3::Ones();       // node spacing (the cell size)
   IntVec3 n = IntVec3::Ones(); // nodes per direction
+  IntVec3 extra = IntVec3::Zero(); // extra-cell layers per side: the domain's faces are
+                                   // the node planes extra and n - 1 - extra
 
   std::vector<double> mass;            // m_g = sum m_p S_gp                      (g.mass)
   std::vector<double> volume;          // V_g = sum V_p S_gp                      (g.volume)

@@ -12,6 +12,7 @@ void seed_particles(const Grid& grid, const std::vector<ParticleSource>& sources
     const IntVec3 res = src.res;
     const double v0 = grid.cell_volume() / (double(res[0]) * res[1] * res[2]);
     const double m = density * v0;
+    const Mat3 size = Vec3(1.0 / res[0], 1.0 / res[1], 1.0 / res[2]).asDiagonal();
     // Cells that can hold points of the piece: those meeting its bounding box.
     const BoundingBox bb = src.piece->bounding_box();
     IntVec3 lo, hi;
@@ -34,7 +35,7 @@ void seed_particles(const Grid& grid, const std::vector<ParticleSource>& sources
                 bool earlier = false;
                 for (std::size_t e = 0; e < s && !earlier; ++e) earlier = sources[e].piece->inside(x);
                 if (earlier) continue;
-                p.add(x, src.velocity, m, v0, src.temperature, src.color, next_id++);
+                p.add(x, src.velocity, m, v0, src.temperature, src.color, next_id++, size);
               }
         }
   }

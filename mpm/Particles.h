@@ -15,6 +15,9 @@ struct Particles {
   std::vector<Vec3> external_force;// applied force [N]                 (p.externalforce)
   std::vector<Mat3> F;             // deformation gradient              (p.deformationMeasure)
   std::vector<Mat3> stress;        // Cauchy stress, tension positive   (p.stress)
+  std::vector<Mat3> psize;         // reference particle domain in cell units, columns = edge vectors
+                                   // (Vaango's pSize: diag(1/res) at seeding); GIMP half-length
+                                   // l_d = size(d,d) h_d / 2; CPDI domain F size   (p.size)
   std::vector<double> mass;        // [kg], constant                    (p.mass)
   std::vector<double> volume;      // current volume J*V0 [m^3]         (p.volume)
   std::vector<double> volume0;     // reference volume m/rho0 [m^3]
@@ -33,13 +36,14 @@ struct Particles {
 
   // Appends one particle at rest in the reference state (F = I, zero stress).
   void add(const Vec3& position, const Vec3& velocity, double m, double v0, double temp,
-           double col, long long pid) {
+           double col, long long pid, const Mat3& sz = Mat3::Identity()) {
     x.push_back(position);
     v.push_back(velocity);
     displacement.push_back(Vec3::Zero());
     external_force.push_back(Vec3::Zero());
     F.push_back(Mat3::Identity());
     stress.push_back(Mat3::Zero());
+    psize.push_back(sz);
     mass.push_back(m);
     volume.push_back(v0);
     volume0.push_back(v0);

@@ -1,29 +1,26 @@
 #pragma once
 // The particle <-> grid kernels of explicit MPM (Vaango theory manual §1.5,
 // Algorithms 5-9 and 14), as free functions over one material's particles and
-// node arrays, with linear shape functions (mpm/ShapeLinear.h).
+// node arrays, generic over the interpolator: each particle's stencil is a
+// list of (node, S_gp, grad S_gp) entries (mpm/shape/Interpolator.h).
 #include <vector>
 
 #include "core/base/Types.h"
 #include "mpm/NodeGrid.h"
 #include "mpm/Particles.h"
-#include "mpm/ShapeLinear.h"
+#include "mpm/shape/Interpolator.h"
 
 namespace tephra {
-
-// Stencil of every particle. Returns the index of the first particle whose
-// support is not wholly inside the node grid, or -1 when all are inside.
-long compute_stencils(const Particles& p, const NodeGrid& g, std::vector<LinearStencil>& s);
 
 // P2G (Alg. 5, eqs. 1.62, 1.64, 1.69), on a reset grid:
 //   m_g = sum m_p S,  V_g = sum V_p S,  v_g = (sum m_p v_p S) / m_g,
 //   f_ext,g = sum (f_ext,p + m_p b) S,  sigma_g = (sum V_p sigma_p S) / V_g.
 // Nodes with m_g = 0 keep v_g = 0.
-void particles_to_grid(const Particles& p, const std::vector<LinearStencil>& s, const Vec3& body_force,
+void particles_to_grid(const Particles& p, const Stencils& s, const Vec3& body_force,
                        NodeGrid& g);
 
 // f_int,g = - sum V_p sigma_p grad S_gp   (Alg. 6, eq. 1.70; sigma, V at t_n).
-void compute_internal_force(const Particles& p, const std::vector<LinearStencil>& s, NodeGrid& g);
+void compute_internal_force(const Particles& p, const Stencils& s, NodeGrid& g);
 
 // a_g = (f_int,g + f_ext,g) / m_g,  v*_g = v_g + a_g dt   (Alg. 7, eqs. 1.71-1.72).
 void integrate_grid_velocity(NodeGrid& g, double dt);
@@ -32,10 +29,10 @@ void integrate_grid_velocity(NodeGrid& g, double dt);
 void acceleration_from_velocities(NodeGrid& g, double dt);
 
 // l_p = sum_g v*_g (grad S_gp)^T   (Alg. 9, eq. 1.73).
-void velocity_gradients(const std::vector<LinearStencil>& s, const NodeGrid& g, std::vector<Mat3>& L);
+void velocity_gradients(const Stencils& s, const NodeGrid& g, std::vector<Mat3>& L);
 
 // G2P, FLIP update (Alg. 14, eq. 1.76):
 //   v_p += dt sum a_g S,  x_p += dt sum v*_g S,  u_p += dt sum v*_g S.
-void grid_to_particles(const std::vector<LinearStencil>& s, const NodeGrid& g, double dt, Particles& p);
+void grid_to_particles(const Stencils& s, const NodeGrid& g, double dt, Particles& p);
 
 }  // namespace tephra

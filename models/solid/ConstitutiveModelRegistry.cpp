@@ -4,6 +4,7 @@
 #include <map>
 
 #include "models/ModelParameters.h"
+#include "models/solid/CnhMms.h"
 #include "models/solid/CompMooneyRivlin.h"
 #include "models/solid/CompNeoHookean.h"
 #include "models/solid/ConstitutiveModel.h"
@@ -17,6 +18,7 @@ using Creator = std::function<ConstitutiveModelP(const ModelParameters&)>;
 
 const std::map<std::string, Creator>& creators() {
   static const std::map<std::string, Creator> table = {
+      {"cnh_mms", &CnhMms::create},
       {"comp_mooney_rivlin", &CompMooneyRivlin::create},
       {"comp_neo_hook", &CompNeoHookean::create},
       {"hypo_elastic", &HypoElastic::create},

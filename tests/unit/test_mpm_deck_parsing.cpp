@@ -20,8 +20,15 @@ TEST(MpmDeckParsing, FlagsAcceptDefaultsAndRejectTheRest) {
                  "<artificial_damping_coeff>0.0</artificial_damping_coeff></MPM>");
   EXPECT_NO_THROW(parse_mpm_flags(ok->root.child("MPM")));
   EXPECT_NO_THROW(parse_mpm_flags(nullptr));
-  EXPECT_THROW(parse_mpm_flags(deck("<MPM><interpolator>gimp</interpolator></MPM>")->root.child("MPM")),
+  EXPECT_EQ(parse_mpm_flags(deck("<MPM><interpolator>gimp</interpolator></MPM>")->root.child("MPM")).interpolator.kind,
+            InterpolatorKind::Gimp);
+  EXPECT_EQ(parse_mpm_flags(deck("<MPM><interpolator>3rdorderBS</interpolator><cpdi_lcrit>0.9</cpdi_lcrit></MPM>")
+                                ->root.child("MPM"))
+                .interpolator.cpdi_lcrit,
+            0.9);
+  EXPECT_THROW(parse_mpm_flags(deck("<MPM><interpolator>cpti</interpolator></MPM>")->root.child("MPM")),
                MissingFeature);
+  EXPECT_THROW(parse_mpm_flags(deck("<MPM><cpdi_lcrit>-1</cpdi_lcrit></MPM>")->root.child("MPM")), DeckError);
   EXPECT_THROW(parse_mpm_flags(deck("<MPM><interpolator>gimpy</interpolator></MPM>")->root.child("MPM")),
                DeckError);
   EXPECT_THROW(

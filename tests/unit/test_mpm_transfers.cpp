@@ -48,8 +48,8 @@ Vec3 total_momentum(const Particles& p) {
 
 TEST(MpmTransfers, P2GConservesMassAndMomentum) {
   RandomCloud s;
-  std::vector<LinearStencil> st;
-  ASSERT_EQ(compute_stencils(s.p, s.g, st), -1);
+  Stencils st;
+  ASSERT_EQ(compute_stencils(s.p, s.g, InterpolatorSpec{}, st), -1);
   particles_to_grid(s.p, st, Vec3::Zero(), s.g);
   double mg = 0;
   Vec3 pg = Vec3::Zero();
@@ -66,8 +66,8 @@ TEST(MpmTransfers, P2GConservesMassAndMomentum) {
 
 TEST(MpmTransfers, InternalForceSumsToZero) {
   RandomCloud s;
-  std::vector<LinearStencil> st;
-  ASSERT_EQ(compute_stencils(s.p, s.g, st), -1);
+  Stencils st;
+  ASSERT_EQ(compute_stencils(s.p, s.g, InterpolatorSpec{}, st), -1);
   compute_internal_force(s.p, st, s.g);
   Vec3 f = Vec3::Zero();
   double scale = 0;
@@ -86,8 +86,8 @@ TEST(MpmTransfers, FullStepChangesMomentumByTheNetExternalForce) {
   const double dt = 1e-4;
   const Vec3 p0 = total_momentum(s.p);
   const double mp = total_mass(s.p);
-  std::vector<LinearStencil> st;
-  ASSERT_EQ(compute_stencils(s.p, s.g, st), -1);
+  Stencils st;
+  ASSERT_EQ(compute_stencils(s.p, s.g, InterpolatorSpec{}, st), -1);
   particles_to_grid(s.p, st, b, s.g);
   compute_internal_force(s.p, st, s.g);
   integrate_grid_velocity(s.g, dt);
@@ -102,13 +102,13 @@ TEST(MpmTransfers, FullStepChangesMomentumByTheNetExternalForce) {
 
 TEST(MpmTransfers, StencilRejectsParticlesOutsideTheGrid) {
   RandomCloud s;
-  std::vector<LinearStencil> st;
+  Stencils st;
   s.p.x[17] = s.g.origin + Vec3(-1e-9, 0.1, 0.1);
-  EXPECT_EQ(compute_stencils(s.p, s.g, st), 17);
+  EXPECT_EQ(compute_stencils(s.p, s.g, InterpolatorSpec{}, st), 17);
   s.p.x[17] = s.g.position(8, 3, 3);  // on the last node plane: its support would need node 9
-  EXPECT_EQ(compute_stencils(s.p, s.g, st), 17);
+  EXPECT_EQ(compute_stencils(s.p, s.g, InterpolatorSpec{}, st), 17);
   s.p.x[17] = Vec3(std::nan(""), 0.0, 0.0);
-  EXPECT_EQ(compute_stencils(s.p, s.g, st), 17);
+  EXPECT_EQ(compute_stencils(s.p, s.g, InterpolatorSpec{}, st), 17);
 }
 
 }  // namespace

@@ -1,0 +1,106 @@
+// compute_stencils: one template instance per interpolator, chosen once.
+#include <cmath>
+
+#include "mpm/NodeGrid.h"
+#include "mpm/Particles.h"
+#include "mpm/shape/Interpolator.h"
+#include "mpm/shape/ShapeBspline.h"
+#include "mpm/shape/ShapeCpdi.h"
+#include "mpm/shape/ShapeGimp.h"
+#include "mpm/shape/ShapeLinear.h"
+
+namespace tephra {
+
+int stencil_width(InterpolatorKind k) {
+  switch (k) {
+    case InterpolatorKind::Linear: return 8;
+    case InterpolatorKind::Gimp: return 27;
+    case InterpolatorKind::QuadraticBspline: return 27;
+    case InterpolatorKind::Cpdi: return 64;
+  }
+  return 0;
+}
+
+std::string interpolator_name(InterpolatorKind k) {
+  switch (k) {
+    case InterpolatorKind::Linear: return "linear";
+    case InterpolatorKind::Gimp: return "gimp";
+    case InterpolatorKind::QuadraticBspline: return "3rdorderBS";
+    case InterpolatorKind::Cpdi: return "cpdi";
+  }
+  return "?";
+}
+
+namespace {
+
+template <InterpolatorKind K>
+long fill(const Particles& p, const NodeGrid& g, const InterpolatorSpec& spec, Stencils& s) {
+  constexpr int W = K == InterpolatorKind::Linear ? 8 : (K == InterpolatorKind::Cpdi ? 64 : 27);
+  IntVec3 node[64];
+  double w[64];
+  Vec3 grad[64];
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    // Range check in floating point first: a NaN or huge coordinate must not
+    // reach the float -> int conversion of a node index.
+    Vec3 xi;
+    for (int d = 0; d < 3; ++d) {
+      xi[d] = (p.x[i][d] - g.origin[d]) / g.h[d];
+      if (!(xi[d] >= 0.0 && xi[d] < g.n[d] - 1)) return static_cast<long>(i);
+    }
+    int count = 0;
+    if constexpr (K == InterpolatorKind::Cpdi) {
+      const Mat3 edges = p.F[i] * p.psize[i];
+      if (!edges.allFinite() || edges.cwiseAbs().maxCoeff() > 4.0 * (g.n.maxCoeff() + 1))
+        return static_cast<long>(i);
+      if (!cpdi_stencil(xi, edges, spec.cpdi_lcrit, g.h, node, w, grad)) return static_cast<long>(i);
+      count = 64;
+    } else {
+      ShapeAxis ax[3];
+      for (int d = 0; d < 3; ++d) {
+        if constexpr (K == InterpolatorKind::Linear) ax[d] = linear_axis(xi[d]);
+        if constexpr (K == InterpolatorKind::Gimp) ax[d] = gimp_axis(xi[d], 0.5 * p.psize[i](d, d));
+        if constexpr (K == InterpolatorKind::QuadraticBspline) ax[d] = quadratic_bspline_axis(xi[d]);
+      }
+      count = tensor_product(ax, g.h, node, w, grad);
+    }
+    // Every node with a weight or gradient must exist; a zero entry that falls
+    // outside (a support touching the last node layer) is clamped harmlessly.
+    const std::size_t base = i * W;
+    for (int k = 0; k < count; ++k) {
+      bool inside = true;
+      for (int d = 0; d < 3; ++d) inside = inside && node[k][d] >= 0 && node[k][d] < g.n[d];
+      if (!inside) {
+        if (w[k] != 0.0 || grad[k] != Vec3::Zero()) return static_cast<long>(i);
+        node[k] = node[k].cwiseMax(IntVec3::Zero()).cwiseMin(g.n - IntVec3::Ones());
+      }
+      s.node[base + k] = g.index(node[k]);
+      s.w[base + k] = w[k];
+      s.grad[base + k] = grad[k];
+    }
+    for (int k = count; k < W; ++k) {
+      s.node[base + k] = s.node[base];
+      s.w[base + k] = 0.0;
+      s.grad[base + k] = Vec3::Zero();
+    }
+  }
+  return -1;
+}
+
+}  // namespace
+
+long compute_stencils(const Particles& p, const NodeGrid& g, const InterpolatorSpec& spec, Stencils& s) {
+  s.width = stencil_width(spec.kind);
+  const std::size_t n = p.size() * std::size_t(s.width);
+  s.node.resize(n);
+  s.w.resize(n);
+  s.grad.resize(n);
+  switch (spec.kind) {
+    case InterpolatorKind::Linear: return fill<InterpolatorKind::Linear>(p, g, spec, s);
+    case InterpolatorKind::Gimp: return fill<InterpolatorKind::Gimp>(p, g, spec, s);
+    case InterpolatorKind::QuadraticBspline: return fill<InterpolatorKind::QuadraticBspline>(p, g, spec, s);
+    case InterpolatorKind::Cpdi: return fill<InterpolatorKind::Cpdi>(p, g, spec, s);
+  }
+  return -1;
+}
+
+}  // namespace tephra
