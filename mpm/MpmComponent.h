@@ -1,7 +1,8 @@
 #pragma once
-// The explicit MPM component (update-stress-last, linear shape functions,
-// null contact: each material moves on its own grid field). See advance() in
-// MpmComponent.cpp for the step, one named phase per line.
+// The explicit MPM component (update-stress-last, linear shape functions, one
+// velocity field per material coupled by a contact model, mpm/contact/). See
+// advance() in MpmComponent.cpp for the step, one named phase per line.
+#include <array>
 #include <limits>
 #include <memory>
 #include <string>
@@ -16,6 +17,7 @@
 #include "mpm/ParticleSeeding.h"
 #include "mpm/Particles.h"
 #include "mpm/ShapeLinear.h"
+#include "mpm/contact/ContactModel.h"
 
 namespace tephra {
 
@@ -41,6 +43,7 @@ struct MpmSetup {
   MpmFlags flags;
   Vec3 gravity = Vec3::Zero();
   std::vector<MpmMaterial> materials;
+  ContactModelP contact;  // nullptr: null contact (materials do not interact)
 };
 
 class MpmComponent final : public Component {
@@ -62,9 +65,11 @@ class MpmComponent final : public Component {
   std::vector<MpmMaterial>& materials() { return setup_.materials; }
 
  private:
-  void advance_material(MpmMaterial& m, double dt, int step);
   double material_stable_timestep(const MpmMaterial& m) const;
   void project_to_grid(MpmMaterial& m, int step, const char* phase);
+  void interpolate_to_grid(MpmMaterial& m, int step, const char* phase);
+  void exchange_momentum(ContactStage stage, double t, double dt);
+  void boundary_forces();
   void update_stress(MpmMaterial& m, int step);
   [[noreturn]] void fail_particle(const MpmMaterial& m, std::size_t i, int step, const std::string& phase,
                                   const std::string& what) const;
@@ -72,6 +77,13 @@ class MpmComponent final : public Component {
   // Stable step for the next advance(), set by the last stress update from
   // c(F_{n+1}) and v_n (Vaango's order); part of the restart state.
   double stable_dt_ = std::numeric_limits<double>::infinity();
+  // Contact scratch of the step (normals, positions, field pointers).
+  ContactNodes contact_nodes_;
+  // BndyForce_<face> = -sum f_int over the face's nodes and all materials,
+  // BndyContactArea_<face> = sum V_g / h_normal (Vaango's computeInternalForce),
+  // for the faces of MpmFlags::boundary_traction_faces; from the last step.
+  std::array<Vec3, 6> boundary_force_{};
+  std::array<double, 6> boundary_area_{};
 };
 
 // Reads the MPM parts of the deck (<MPM>, <PhysicalConstants>, <MaterialProperties><MPM>,
@@ -80,6 +92,6 @@ std::unique_ptr<MpmComponent> make_mpm_component(const Deck& deck);
 
 // Registries for `tephra --list`.
 std::vector<std::string> mpm_interpolators();  // {"linear"}
-std::vector<std::string> mpm_contact_types();  // {"null"}
+std::vector<std::string> mpm_contact_types();  // contact_types() of mpm/contact
 
 }  // namespace tephra

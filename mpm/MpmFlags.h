@@ -3,6 +3,8 @@
 // functions is implemented; every other flag must either leave the physics
 // of what is implemented unchanged or hold Vaango's default value. Anything
 // else is a MissingFeature naming the flag (never silently ignored).
+#include <vector>
+
 namespace tephra {
 
 class DeckNode;
@@ -12,6 +14,10 @@ struct MpmFlags {
   // Kept as a struct so later slices (GIMP, damping, ...) add fields here.
   bool explicit_integrator = true;
   bool linear_interpolator = true;
+  // <boundary_traction_faces>[zminus,zplus]</boundary_traction_faces>: faces
+  // (0 x-, 1 x+, 2 y-, 3 y+, 4 z-, 5 z+) whose BndyForce_<face> and
+  // BndyContactArea_<face> reductions are computed.
+  std::vector<int> boundary_traction_faces;
 };
 
 // Reads <MPM> (may be null: all defaults).
