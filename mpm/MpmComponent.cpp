@@ -125,6 +125,8 @@ void MpmComponent::exchange_momentum(ContactStage stage, double t, double dt) {
     for (std::size_t i = 0; i < c.gradient.size(); ++i) mass_gradient(mats[i].particles, mats[i].stencils, mats[i].grid, c.gradient[i]);
     for (std::size_t i = 0; i < c.position.size(); ++i)
       mass_weighted_position(mats[i].particles, mats[i].stencils, mats[i].grid, c.position[i]);
+    p2g_velocity_.resize(mats.size());
+    for (std::size_t i = 0; i < mats.size(); ++i) p2g_velocity_[i] = mats[i].grid.velocity;
     if (!model.acts_on(stage)) return;
   }
   c.velocity.clear();
@@ -188,12 +190,24 @@ void MpmComponent::advance(double t, double dt, int step) {
   }
   // 7. Contact on the integrated velocities v*_g.
   if (contact) exchange_momentum(ContactStage::Integrated, t, dt);
-  // 8. Grid BCs on v*_g, then a_g = (v*_g - v_g)/dt (Alg. 8).
+  // 8. Grid BCs on v*_g, then a_g = (v*_g - v_g)/dt (Alg. 8). With contact,
+  //    v_g is the P2G velocity from before the interpolated contact, so that
+  //    the FLIP update v_p += dt sum a_g S carries both contact corrections
+  //    to the particles. (Vaango takes a_g against the corrected v_g, which
+  //    drops the interpolated-stage correction from the particle velocities:
+  //    a block resting on a plane under gravity then keeps the approach
+  //    velocity that contact removed on the grid and sinks into the plane.)
   {
     PhaseTimers::Scope timer(phase_timers(), "MPM: set grid boundary conditions");
-    for (MpmMaterial& m : mats) {
+    for (std::size_t i = 0; i < mats.size(); ++i) {
+      MpmMaterial& m = mats[i];
       m.bcs.apply(m.grid, m.grid.velocity_star);
-      acceleration_from_velocities(m.grid, dt);
+      if (contact) {
+        for (std::size_t g = 0; g < m.grid.count(); ++g)
+          m.grid.acceleration[g] = (m.grid.velocity_star[g] - p2g_velocity_[i][g]) / dt;
+      } else {
+        acceleration_from_velocities(m.grid, dt);
+      }
     }
   }
   // 9. l_p = sum v*_g grad S^T, F_{n+1} = (I + dt l) F_n (Alg. 9, eqs. 1.73-1.75).

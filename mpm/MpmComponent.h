@@ -79,6 +79,9 @@ class MpmComponent final : public Component {
   double stable_dt_ = std::numeric_limits<double>::infinity();
   // Contact scratch of the step (normals, positions, field pointers).
   ContactNodes contact_nodes_;
+  // v_g of each material as P2G (and the grid BCs) left it, before the
+  // interpolated contact; the step's a_g is taken against it (see advance()).
+  std::vector<std::vector<Vec3>> p2g_velocity_;
   // BndyForce_<face> = -sum f_int over the face's nodes and all materials,
   // BndyContactArea_<face> = sum V_g / h_normal (Vaango's computeInternalForce),
   // for the faces of MpmFlags::boundary_traction_faces; from the last step.
