@@ -10,6 +10,7 @@
 #include "core/base/Errors.h"
 #include "core/base/PhaseTimers.h"
 #include "mpm/Transfers.h"
+#include "mpm/contact/ContactNormals.h"
 
 namespace tephra {
 
@@ -23,6 +24,8 @@ MpmComponent::MpmComponent(MpmSetup setup) : setup_(std::move(setup)) {
     m.grid.extra = g.extra_cells;
     m.grid.reset();
   }
+  boundary_force_.fill(Vec3::Zero());
+  boundary_area_.fill(0.0);
 }
 
 void MpmComponent::initialize() {
@@ -80,20 +83,21 @@ void MpmComponent::fail_particle(const MpmMaterial& m, std::size_t i, int step, 
   throw NumericalFailure(s.str());
 }
 
-// Stencils + P2G + internal force (Alg. 5-6) on a reset grid.
+// Stencils + P2G (Alg. 5) on a reset grid, with the grid BCs on v_g.
+void MpmComponent::interpolate_to_grid(MpmMaterial& m, int step, const char* phase) {
+  PhaseTimers::Scope t(phase_timers(), "MPM: interpolate particles to grid");
+  const long bad = compute_stencils(m.particles, m.grid, setup_.flags.interpolator, m.stencils);
+  if (bad >= 0) fail_particle(m, std::size_t(bad), step, phase, "particle is outside the grid");
+  m.grid.reset();
+  particles_to_grid(m.particles, m.stencils, setup_.gravity, m.grid);
+  m.bcs.apply(m.grid, m.grid.velocity);
+}
+
+// P2G + internal force (Alg. 5-6): the g.* fields of the initial state.
 void MpmComponent::project_to_grid(MpmMaterial& m, int step, const char* phase) {
-  {
-    PhaseTimers::Scope t(phase_timers(), "MPM: interpolate particles to grid");
-    const long bad = compute_stencils(m.particles, m.grid, setup_.flags.interpolator, m.stencils);
-    if (bad >= 0) fail_particle(m, std::size_t(bad), step, phase, "particle is outside the grid");
-    m.grid.reset();
-    particles_to_grid(m.particles, m.stencils, setup_.gravity, m.grid);
-    m.bcs.apply(m.grid, m.grid.velocity);
-  }
-  {
-    PhaseTimers::Scope t(phase_timers(), "MPM: compute internal force");
-    compute_internal_force(m.particles, m.stencils, m.grid);
-  }
+  interpolate_to_grid(m, step, phase);
+  PhaseTimers::Scope t(phase_timers(), "MPM: compute internal force");
+  compute_internal_force(m.particles, m.stencils, m.grid);
 }
 
 // sigma_{n+1}, c, W, history from (F_n, F_{n+1}, l, sigma_n) (Alg. 11); V_{n+1} = J V0 (Alg. 9).
@@ -127,48 +131,158 @@ void MpmComponent::update_stress(MpmMaterial& m, int step, double dt) {
                                   "' rejected the state (non-finite stress or no real wave speed)");
 }
 
-// One explicit USL step of one material (Vaango theory manual §1.5, Alg. 2).
-void MpmComponent::advance_material(MpmMaterial& m, double t, double dt, int step) {
-  Particles& p = m.particles;
-  if (m.mms) {
-    PhaseTimers::Scope timer(phase_timers(), "MPM: apply external loads");
-    apply_mms_body_force(*m.mms, t, p);  // f_ext,p = m_p b(X_p, t_n)  (Vaango: at the step's start time)
+// Contact on v_g (interpolated) or v*_g (integrated) of all materials (§1.7).
+// The normals and positions depend on the particles of step n only, so they
+// are computed once, at the interpolated stage, and reused.
+void MpmComponent::exchange_momentum(ContactStage stage, double t, double dt) {
+  const ContactModel& model = *setup_.contact;
+  if (!model.acts_on(stage) && !(stage == ContactStage::Interpolated)) return;
+  PhaseTimers::Scope timer(phase_timers(), stage == ContactStage::Interpolated
+                                               ? "MPM: contact (interpolated)"
+                                               : "MPM: contact (integrated)");
+  ContactNodes& c = contact_nodes_;
+  auto& mats = setup_.materials;
+  if (stage == ContactStage::Interpolated) {
+    c.grid.clear();
+    for (const MpmMaterial& m : mats) c.grid.push_back(&m.grid);
+    c.h = setup_.grid.dx;
+    c.t = t;
+    c.dt = dt;
+    c.gradient.resize(model.needs_normals() ? mats.size() : 0);
+    c.position.resize(model.needs_positions() ? mats.size() : 0);
+    for (std::size_t i = 0; i < c.gradient.size(); ++i) mass_gradient(mats[i].particles, mats[i].stencils, mats[i].grid, c.gradient[i]);
+    for (std::size_t i = 0; i < c.position.size(); ++i)
+      mass_weighted_position(mats[i].particles, mats[i].stencils, mats[i].grid, c.position[i]);
+    p2g_velocity_.resize(mats.size());
+    for (std::size_t i = 0; i < mats.size(); ++i) p2g_velocity_[i] = mats[i].grid.velocity;
+    if (!model.acts_on(stage)) return;
   }
-  project_to_grid(m, step, "interpolate particles to grid");  // m_g, v_g (+BC), f_ext, f_int
-  {
-    PhaseTimers::Scope t(phase_timers(), "MPM: integrate grid acceleration");
-    integrate_grid_velocity(m.grid, dt);                // a_g = f/m_g, v*_g = v_g + a_g dt
-    m.bcs.apply(m.grid, m.grid.velocity_star);           // v*_g on Dirichlet / symmetry faces
-    acceleration_from_velocities(m.grid, dt);           // a_g = (v*_g - v_g)/dt
-  }
-  {
-    PhaseTimers::Scope t(phase_timers(), "MPM: compute deformation gradient");
-    velocity_gradients(m.stencils, m.grid, m.L);        // l_p = sum v*_g grad S^T
-    m.F_old = p.F;
-    for (std::size_t i = 0; i < p.size(); ++i)
-      p.F[i] = (Mat3::Identity() + dt * m.L[i]) * p.F[i];  // F_{n+1} = (I + dt l) F_n  (eq. 1.74-1.75)
-    if (m.model->rigid()) std::fill(p.F.begin(), p.F.end(), Mat3::Identity());  // F = I (VT eq. 3.1)
-  }
-  update_stress(m, step, dt);
-  // dt of the next step from c(F_{n+1}) and v_n (before the particle update).
-  stable_dt_ = std::min(stable_dt_, material_stable_timestep(m));
-  {
-    PhaseTimers::Scope t(phase_timers(), "MPM: interpolate to particles and update");
-    grid_to_particles(m.stencils, m.grid, dt, p);       // v_p += dt a, x_p += dt v*
-    for (std::size_t i = 0; i < p.size(); ++i) {
-      if (!p.v[i].allFinite()) fail_particle(m, i, step, "interpolate to particles", "non-finite velocity");
-      for (int d = 0; d < 3; ++d) {
-        const double xi = (p.x[i][d] - m.grid.origin[d]) / m.grid.h[d];
-        if (!(xi >= 0.0 && xi < m.grid.n[d] - 1))
-          fail_particle(m, i, step, "interpolate to particles", "particle left the grid");
-      }
+  c.velocity.clear();
+  for (MpmMaterial& m : mats)
+    c.velocity.push_back(stage == ContactStage::Interpolated ? &m.grid.velocity : &m.grid.velocity_star);
+  model.exchange(stage, c);
+}
+
+// Vaango's boundary reactions (SerialMPM::computeInternalForce): for each
+// requested domain face, BndyForce = -sum f_int over the nodes on the face,
+// all materials (Vaango's sign: minus the internal force, so a body in
+// uniform stress sigma touching the face gives -sigma . n_in A with n_in the
+// inward normal; e.g. on z- a compressed body gives +|sigma_zz| A), and
+// BndyContactArea = sum V_g / h_d over the same nodes (d the face normal).
+void MpmComponent::boundary_forces() {
+  for (int f : setup_.flags.boundary_traction_faces) {
+    const int d = f / 2;
+    Vec3 force = Vec3::Zero();
+    double area = 0.0;
+    for (const MpmMaterial& m : setup_.materials) {
+      // The domain's face nodes (Vaango's Patch::FaceNodes): the node plane
+      // extra or n - 1 - extra, over the interior nodes of the other two
+      // directions (not the extra-cell nodes that GIMP/CPDI/B-splines reach).
+      const NodeGrid& g = m.grid;
+      const int plane = (f % 2 == 0) ? g.extra[d] : g.n[d] - 1 - g.extra[d];
+      const int a = (d + 1) % 3, b = (d + 2) % 3;
+      IntVec3 c;
+      c[d] = plane;
+      for (c[b] = g.extra[b]; c[b] < g.n[b] - g.extra[b]; ++c[b])
+        for (c[a] = g.extra[a]; c[a] < g.n[a] - g.extra[a]; ++c[a]) {
+          const std::size_t gi = g.index(c);
+          force -= g.internal_force[gi];
+          area += g.volume[gi] / g.h[d];
+        }
     }
+    boundary_force_[f] = force;
+    boundary_area_[f] = area;
   }
 }
 
+// One explicit USL step of all materials, in the order of Algorithm 2 of the
+// Vaango theory manual (§1.9). Each phase runs over every material before the
+// next starts, so that contact sees the node values of all of them. With one
+// material or null contact there is no contact pass. Every phase works with
+// the stencils of <MPM><interpolator> (linear, gimp, cpdi, 3rdorderBS), and
+// the grid BCs also set the extra-cell nodes those reach.
 void MpmComponent::advance(double t, double dt, int step) {
   stable_dt_ = std::numeric_limits<double>::infinity();
-  for (MpmMaterial& m : setup_.materials) advance_material(m, t, dt, step);
+  auto& mats = setup_.materials;
+  const bool contact = setup_.contact && mats.size() > 1;
+
+  // 0. External loads on the particles: the manufactured solution's body
+  //    force f_ext,p = m_p b(X_p, t_n) (Vaango: at the step's start time).
+  for (MpmMaterial& m : mats)
+    if (m.mms) {
+      PhaseTimers::Scope timer(phase_timers(), "MPM: apply external loads");
+      apply_mms_body_force(*m.mms, t, m.particles);
+    }
+  // 1-3. Body force (gravity) and external loads enter P2G: m_g, V_g, v_g, f_ext,g (Alg. 5, eq. 1.69).
+  for (MpmMaterial& m : mats) interpolate_to_grid(m, step, "interpolate particles to grid");
+  // 4. Contact on the interpolated velocities v_g.
+  if (contact) exchange_momentum(ContactStage::Interpolated, t, dt);
+  // 5. f_int,g = -sum V_p sigma_p grad S_gp with sigma, V at t_n (Alg. 6, eq. 1.70).
+  {
+    PhaseTimers::Scope timer(phase_timers(), "MPM: compute internal force");
+    for (MpmMaterial& m : mats) compute_internal_force(m.particles, m.stencils, m.grid);
+    boundary_forces();
+  }
+  // 6. a_g = (f_int + f_ext)/m_g, v*_g = v_g + a_g dt (Alg. 7, eqs. 1.71-1.72).
+  {
+    PhaseTimers::Scope timer(phase_timers(), "MPM: integrate grid acceleration");
+    for (MpmMaterial& m : mats) integrate_grid_velocity(m.grid, dt);
+  }
+  // 7. Contact on the integrated velocities v*_g.
+  if (contact) exchange_momentum(ContactStage::Integrated, t, dt);
+  // 8. Grid BCs on v*_g, then a_g = (v*_g - v_g)/dt (Alg. 8). With contact,
+  //    v_g is the P2G velocity from before the interpolated contact, so that
+  //    the FLIP update v_p += dt sum a_g S carries both contact corrections
+  //    to the particles. (Vaango takes a_g against the corrected v_g, which
+  //    drops the interpolated-stage correction from the particle velocities:
+  //    a block resting on a plane under gravity then keeps the approach
+  //    velocity that contact removed on the grid and sinks into the plane.)
+  {
+    PhaseTimers::Scope timer(phase_timers(), "MPM: set grid boundary conditions");
+    for (std::size_t i = 0; i < mats.size(); ++i) {
+      MpmMaterial& m = mats[i];
+      m.bcs.apply(m.grid, m.grid.velocity_star);
+      if (contact) {
+        for (std::size_t g = 0; g < m.grid.count(); ++g)
+          m.grid.acceleration[g] = (m.grid.velocity_star[g] - p2g_velocity_[i][g]) / dt;
+      } else {
+        acceleration_from_velocities(m.grid, dt);
+      }
+    }
+  }
+  // 9. l_p = sum v*_g grad S^T, F_{n+1} = (I + dt l) F_n (Alg. 9, eqs. 1.73-1.75);
+  //    F_n is kept as the model's input; a rigid material keeps F = I (VT eq. 3.1).
+  {
+    PhaseTimers::Scope timer(phase_timers(), "MPM: compute deformation gradient");
+    for (MpmMaterial& m : mats) {
+      velocity_gradients(m.stencils, m.grid, m.L);
+      Particles& p = m.particles;
+      m.F_old = p.F;
+      for (std::size_t i = 0; i < p.size(); ++i) p.F[i] = (Mat3::Identity() + dt * m.L[i]) * p.F[i];
+      if (m.model->rigid()) std::fill(p.F.begin(), p.F.end(), Mat3::Identity());
+    }
+  }
+  // 10. sigma_{n+1}, history (Alg. 11); the next step's dt from c(F_{n+1}) and v_n (before the particle update).
+  for (MpmMaterial& m : mats) {
+    update_stress(m, step, dt);
+    stable_dt_ = std::min(stable_dt_, material_stable_timestep(m));
+  }
+  // 13. G2P, FLIP: v_p += dt sum a_g S, x_p += dt sum v*_g S (Alg. 14, eq. 1.76).
+  {
+    PhaseTimers::Scope timer(phase_timers(), "MPM: interpolate to particles and update");
+    for (MpmMaterial& m : mats) {
+      Particles& p = m.particles;
+      grid_to_particles(m.stencils, m.grid, dt, p);
+      for (std::size_t i = 0; i < p.size(); ++i) {
+        if (!p.v[i].allFinite()) fail_particle(m, i, step, "interpolate to particles", "non-finite velocity");
+        for (int d = 0; d < 3; ++d) {
+          const double xi = (p.x[i][d] - m.grid.origin[d]) / m.grid.h[d];
+          if (!(xi >= 0.0 && xi < m.grid.n[d] - 1))
+            fail_particle(m, i, step, "interpolate to particles", "particle left the grid");
+        }
+      }
+    }
+  }
   time_ = t + dt;
 }
 
@@ -180,6 +294,6 @@ double MpmComponent::mms_displacement_error() const {
 }
 
 std::vector<std::string> mpm_interpolators() { return {"linear", "gimp", "cpdi", "3rdorderBS"}; }
-std::vector<std::string> mpm_contact_types() { return {"null"}; }
+std::vector<std::string> mpm_contact_types() { return contact_types(); }
 
 }  // namespace tephra

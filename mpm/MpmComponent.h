@@ -1,7 +1,9 @@
 #pragma once
 // The explicit MPM component (update-stress-last, the interpolator of
-// <MPM><interpolator>, null contact: each material moves on its own grid field). See advance() in
-// MpmComponent.cpp for the step, one named phase per line.
+// <MPM><interpolator>, one velocity field per material coupled by a contact
+// model, mpm/contact/). See advance() in MpmComponent.cpp for the step, one
+// named phase per line.
+#include <array>
 #include <limits>
 #include <memory>
 #include <string>
@@ -15,6 +17,7 @@
 #include "mpm/NodeGrid.h"
 #include "mpm/ParticleSeeding.h"
 #include "mpm/Particles.h"
+#include "mpm/contact/ContactModel.h"
 #include "mpm/mms/ManufacturedSolution.h"
 #include "mpm/shape/Interpolator.h"
 
@@ -46,6 +49,7 @@ struct MpmSetup {
   MpmFlags flags;
   Vec3 gravity = Vec3::Zero();
   std::vector<MpmMaterial> materials;
+  ContactModelP contact;  // nullptr: null contact (materials do not interact)
 };
 
 class MpmComponent final : public Component {
@@ -71,9 +75,11 @@ class MpmComponent final : public Component {
   std::vector<MpmMaterial>& materials() { return setup_.materials; }
 
  private:
-  void advance_material(MpmMaterial& m, double t, double dt, int step);
   double material_stable_timestep(const MpmMaterial& m) const;
   void project_to_grid(MpmMaterial& m, int step, const char* phase);
+  void interpolate_to_grid(MpmMaterial& m, int step, const char* phase);
+  void exchange_momentum(ContactStage stage, double t, double dt);
+  void boundary_forces();
   void update_stress(MpmMaterial& m, int step, double dt);
   [[noreturn]] void fail_particle(const MpmMaterial& m, std::size_t i, int step, const std::string& phase,
                                   const std::string& what) const;
@@ -82,6 +88,16 @@ class MpmComponent final : public Component {
   // c(F_{n+1}) and v_n (Vaango's order); part of the restart state.
   double stable_dt_ = std::numeric_limits<double>::infinity();
   double time_ = 0.0;  // time of the particle state (for the MMS error)
+  // Contact scratch of the step (normals, positions, field pointers).
+  ContactNodes contact_nodes_;
+  // v_g of each material as P2G (and the grid BCs) left it, before the
+  // interpolated contact; the step's a_g is taken against it (see advance()).
+  std::vector<std::vector<Vec3>> p2g_velocity_;
+  // BndyForce_<face> = -sum f_int over the face's nodes and all materials,
+  // BndyContactArea_<face> = sum V_g / h_normal (Vaango's computeInternalForce),
+  // for the faces of MpmFlags::boundary_traction_faces; from the last step.
+  std::array<Vec3, 6> boundary_force_{};
+  std::array<double, 6> boundary_area_{};
 };
 
 // Reads the MPM parts of the deck (<MPM>, <PhysicalConstants>, <MaterialProperties><MPM>,
@@ -90,6 +106,6 @@ std::unique_ptr<MpmComponent> make_mpm_component(const Deck& deck);
 
 // Registries for `tephra --list`.
 std::vector<std::string> mpm_interpolators();  // {"linear", "gimp", "cpdi", "3rdorderBS"}
-std::vector<std::string> mpm_contact_types();  // {"null"}
+std::vector<std::string> mpm_contact_types();  // contact_types() of mpm/contact
 
 }  // namespace tephra

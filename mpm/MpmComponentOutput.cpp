@@ -87,6 +87,9 @@ void for_each_column(P& p, G& g, Fn&& fn) {
 
 std::string prefix(const MpmMaterial& m) { return "mpm.m" + std::to_string(m.index) + "."; }
 
+// Vaango's face names in the BndyForce_<face> / BndyContactArea_<face> labels.
+const char* const kFaceNames[6] = {"xminus", "xplus", "yminus", "yplus", "zminus", "zplus"};
+
 }  // namespace
 
 std::set<std::string> MpmComponent::known_labels() const {
@@ -96,6 +99,12 @@ std::set<std::string> MpmComponent::known_labels() const {
   for (const char* l : kReductionLabels) s.insert(l);
   for (const MpmMaterial& m : setup_.materials)
     for (const HistoryVariable& h : m.model->history()) s.insert("p." + h.name);
+  // Only the faces of <boundary_traction_faces> are computed (as in Vaango,
+  // saving another face's label is an error rather than zeros).
+  for (int f : setup_.flags.boundary_traction_faces) {
+    s.insert(std::string("BndyForce_") + kFaceNames[f]);
+    s.insert(std::string("BndyContactArea_") + kFaceNames[f]);
+  }
   return s;
 }
 
@@ -181,6 +190,13 @@ std::map<std::string, std::vector<double>> MpmComponent::reductions(const std::s
     const Vec3 c = mass > 0 ? Vec3(mx / mass) : Vec3::Zero();
     out["CenterOfMassPosition"] = {c[0], c[1], c[2]};
   }
+  for (int f : setup_.flags.boundary_traction_faces) {
+    const std::string force = std::string("BndyForce_") + kFaceNames[f];
+    const std::string area = std::string("BndyContactArea_") + kFaceNames[f];
+    const Vec3& F = boundary_force_[f];
+    if (labels.count(force)) out[force] = {F[0], F[1], F[2]};
+    if (labels.count(area)) out[area] = {boundary_area_[f]};
+  }
   return out;
 }
 
@@ -194,6 +210,12 @@ void MpmComponent::save_state(StateArchive& a) const {
   }
   a.put_scalar("mpm.stable_dt", stable_dt_);
   a.put_scalar("mpm.time", time_);
+  std::vector<double> bndy;
+  for (int f = 0; f < 6; ++f) {
+    append(bndy, boundary_force_[f]);
+    bndy.push_back(boundary_area_[f]);
+  }
+  a.put("mpm.boundary_force_area", bndy);
 }
 
 void MpmComponent::load_state(const StateArchive& a) {
@@ -218,6 +240,12 @@ void MpmComponent::load_state(const StateArchive& a) {
   }
   stable_dt_ = a.scalar("mpm.stable_dt");
   time_ = a.scalar("mpm.time");
+  const std::vector<double>& bndy = a.doubles("mpm.boundary_force_area");
+  if (bndy.size() != 24) throw RuntimeFailure("checkpoint array 'mpm.boundary_force_area' has a bad size");
+  for (int f = 0; f < 6; ++f) {
+    boundary_force_[f] = Vec3(bndy[4 * f], bndy[4 * f + 1], bndy[4 * f + 2]);
+    boundary_area_[f] = bndy[4 * f + 3];
+  }
 }
 
 }  // namespace tephra

@@ -76,16 +76,6 @@ MpmMaterial parse_material(const DeckNode& mat, int index, GeometryRegistry& geo
   return m;
 }
 
-void check_contact(const DeckNode& contact) {
-  const DeckNode& type = contact.require_child("type");
-  if (type.text == "null") return;  // no interaction: each material on its own grid field
-  static const char* known[] = {"single_velocity", "rigid", "specified", "specified_velocity", "friction",
-                                "friction_bard", "friction_LR", "approach"};
-  for (const char* k : known)
-    if (type.text == k) type.missing_feature("MPM contact type '" + type.text + "' (implemented: null)");
-  type.fail("unknown MPM contact type '" + type.text + "'");
-}
-
 // <run_MMS_problem>: every material must be cnh_mms (the body forces are
 // derived for its stress law).
 void attach_manufactured_solution(const DeckNode& mpm_flags, MpmSetup& setup) {
@@ -127,11 +117,16 @@ std::unique_ptr<MpmComponent> make_mpm_component(const Deck& deck) {
   const DeckNode& props = root.require_child("MaterialProperties");
   const DeckNode& mpm = props.require_child("MPM");
   GeometryRegistry geometry;
+  for (const DeckNode& c : mpm.children)
+    if (c.name == "material") setup.materials.push_back(parse_material(c, int(setup.materials.size()), geometry));
   for (const DeckNode& c : mpm.children) {
     if (c.name == "material") {
-      setup.materials.push_back(parse_material(c, int(setup.materials.size()), geometry));
+      continue;
     } else if (c.name == "contact") {
-      check_contact(c);
+      ContactModelP model = parse_contact(c, int(setup.materials.size()));
+      if (model && setup.contact)
+        c.missing_feature("a second non-null <contact> model (Vaango's composite contact)");
+      if (model) setup.contact = std::move(model);
     } else {
       c.missing_feature("<MaterialProperties><MPM><" + c.name + ">");
     }

@@ -1,6 +1,7 @@
 #include "mpm/MpmFlags.h"
 
 #include <map>
+#include <sstream>
 #include <string>
 
 #include "core/deck/DeckNode.h"
@@ -14,7 +15,7 @@ namespace {
 // limits that only act on states the run stops on anyway). Accepted with any
 // valid value.
 const char* const kNoEffect[] = {
-    "withColor", "boundary_traction_faces", "computeScaleFactor", "computeNodalHeatFlux",
+    "withColor", "computeScaleFactor", "computeNodalHeatFlux",
     "DoExplicitHeatConduction", "do_explicit_heat_conduction", "DoTransientImplicitHeatConduction", "DoThermalExpansion",
     "do_contact_friction_heating", "interpolateParticleTempToGridEveryStep", "testForNegTemps_mpm",
     "minimum_particle_mass", "maximum_particle_velocity", "min_grid_level", "max_grid_level",
@@ -71,6 +72,22 @@ MpmFlags parse_mpm_flags(const DeckNode* mpm) {
     bool no_effect = false;
     for (const char* n : kNoEffect) no_effect = no_effect || c.name == n;
     if (no_effect) continue;
+
+    if (c.name == "boundary_traction_faces") {
+      // A list of Vaango face names, "[zminus,zplus]".
+      std::string list = c.text;
+      for (char& ch : list)
+        if (ch == '[' || ch == ']' || ch == ',') ch = ' ';
+      std::istringstream words(list);
+      static const char* faces[6] = {"xminus", "xplus", "yminus", "yplus", "zminus", "zplus"};
+      for (std::string w; words >> w;) {
+        int f = 0;
+        while (f < 6 && w != faces[f]) ++f;
+        if (f == 6) c.fail("boundary_traction_faces: '" + w + "' is not one of xminus, xplus, yminus, yplus, zminus, zplus");
+        flags.boundary_traction_faces.push_back(f);
+      }
+      continue;
+    }
 
     if (c.name == "time_integrator") {
       if (c.text == "explicit") continue;

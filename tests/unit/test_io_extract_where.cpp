@@ -24,7 +24,10 @@ const Grid& grid() {
 
 std::string run_dir() {
   static const std::string dir = [] {
-    std::string d = test::scratch_dir("io_extract_where");
+    // One folder per test: ctest runs each test in its own process, in
+    // parallel, and scratch_dir() empties the folder it returns.
+    const ::testing::TestInfo* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    std::string d = test::scratch_dir(std::string("io_extract_where_") + (info ? info->name() : "main"));
     OutputWriter w(d, false);
     w.write_frame(test::sample_frame(grid(), 0));
     w.append_reductions(0.0, {{"KineticEnergy", {1.0}}});
