@@ -2,6 +2,7 @@
 // phase list. The phases themselves are in IceStep.cpp.
 #include "ice/IceComponent.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -54,6 +55,10 @@ void IceComponent::initialize() {
   dq_ = CellScalars(g, kGhosts);
   sum_kappa_ = CellScalars(g, kGhosts);
   dqv_ = CellVectors(g, kGhosts);
+  visc_force_ = CellVectors(g, kGhosts);
+  vel_bc_ = CellVectors(g, kGhosts);
+  heat_ = CellScalars(g, kGhosts);
+  temp_bc_ = CellScalars(g, kGhosts);
 
   for (std::size_t m = 0; m < nm; ++m) {
     const IceMaterialSpec& spec = setup_.materials[m];
@@ -130,7 +135,23 @@ double IceComponent::stable_timestep() const {
         const Vec3& u = f.vel_CC[pi](i, j, k);
         for (int d = 0; d < 3; ++d) dt = std::min(dt, g.dx[d] / (c + std::abs(u[d]) + 1e-100));
       });
-  return setup_.cfl * dt;
+  dt *= setup_.cfl;
+  // Explicit diffusion limit (viscosity, conduction): the forward-Euler
+  // stability bound of u_t = D lap u, dt <= 1/(2 D sum_d 1/dx_d^2), with
+  // D = max(mu/rho, k/(rho cv)) over the cells (rho the micro density).
+  double inv_dx2 = 0;
+  for (int d = 0; d < 3; ++d) inv_dx2 += 1.0 / (g.dx[d] * g.dx[d]);
+  for (std::size_t m = 0; m < mats_.size(); ++m) {
+    const IceMaterialSpec& spec = setup_.materials[m];
+    if (spec.dynamic_viscosity == 0.0 && spec.thermal_conductivity == 0.0) continue;
+    for (std::size_t pi = 0; pi < g.patches.size(); ++pi)
+      for_each_cell_serial(g.patches[pi].cells(), [&](int i, int j, int k) {
+        const double v = mats_[m].sp_vol_CC[pi](i, j, k);
+        const double D = std::max(spec.dynamic_viscosity * v, spec.thermal_conductivity * v / spec.cv);
+        if (D > 0) dt = std::min(dt, 0.5 / (D * inv_dx2));
+      });
+  }
+  return dt;
 }
 
 // One explicit ICE step (Vaango theory manual ch. 26 step list, pure-fluid

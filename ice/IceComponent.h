@@ -46,6 +46,7 @@ class IceComponent final : public Component {
   void compute_delP_and_pressure(double dt);
   void compute_face_pressure();
   void lagrangian_values_and_exchange(double dt);
+  void compute_diffusion_sources(std::size_t m, std::size_t pi);
   void advect_and_advance(double dt, int step);
 
   void apply_state_bcs(std::size_t m);  // rho, vel, temp, sp_vol extra cells of material m
@@ -64,6 +65,10 @@ class IceComponent final : public Component {
   FaceData<Vec3> flux_v_;
   CellScalars dq_, sum_kappa_, mass_new_;
   CellVectors dqv_;
+  // Viscous force and conduction of the current material (Diffusion.h), and
+  // the velocity/temperature with the wall-mirrored extra cells they use.
+  CellVectors visc_force_, vel_bc_;
+  CellScalars heat_, temp_bc_;
 };
 
 // Reads <CFD><ICE>, <MaterialProperties><ICE>, <exchange_properties>,

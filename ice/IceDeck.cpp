@@ -20,15 +20,26 @@ std::string join(const std::vector<std::string>& v) {
 
 // ModelParameters over the children of <EOS>; a failure about a parameter that
 // is not a child (gamma, specific_heat live beside <EOS>) is located at <EOS>.
+// Every name asked for is recorded, so children no creator read are rejected.
 class EosDeckParameters final : public ModelParameters {
  public:
   explicit EosDeckParameters(const DeckNode& n) : node_(n) {}
-  bool has(const std::string& name) const override { return node_.has_child(name); }
-  double get_double(const std::string& name) const override { return node_.get_double(name); }
+  bool has(const std::string& name) const override {
+    used_.insert(name);
+    return node_.has_child(name);
+  }
+  double get_double(const std::string& name) const override {
+    used_.insert(name);
+    return node_.get_double(name);
+  }
   double get_double(const std::string& name, double fallback) const override {
+    used_.insert(name);
     return node_.get_double(name, fallback);
   }
-  bool get_bool(const std::string& name, bool fallback) const override { return node_.get_bool(name, fallback); }
+  bool get_bool(const std::string& name, bool fallback) const override {
+    used_.insert(name);
+    return node_.get_bool(name, fallback);
+  }
   [[noreturn]] void fail(const std::string& name, const std::string& message) const override {
     const DeckNode* c = node_.child(name);
     (c ? *c : node_).fail(message);
@@ -37,9 +48,11 @@ class EosDeckParameters final : public ModelParameters {
     const DeckNode* c = node_.child(name);
     (c ? *c : node_).missing_feature(what);
   }
+  bool used(const std::string& name) const { return used_.count(name) > 0; }
 
  private:
   const DeckNode& node_;
+  mutable std::set<std::string> used_;
 };
 
 double positive(const DeckNode& parent, const char* name) {
@@ -76,10 +89,6 @@ IceMaterialSpec parse_material(const DeckNode& mat, int index, GeometryRegistry&
   m.thermal_conductivity = mat.require_child("thermal_conductivity").as_double();
   if (m.dynamic_viscosity < 0) mat.require_child("dynamic_viscosity").fail("dynamic_viscosity must be >= 0");
   if (m.thermal_conductivity < 0) mat.require_child("thermal_conductivity").fail("thermal_conductivity must be >= 0");
-  if (m.dynamic_viscosity != 0)
-    mat.require_child("dynamic_viscosity").missing_feature("ICE viscous stresses (dynamic_viscosity != 0)");
-  if (m.thermal_conductivity != 0)
-    mat.require_child("thermal_conductivity").missing_feature("ICE heat conduction (thermal_conductivity != 0)");
   for (const DeckNode& c : mat.children) {
     if (c.name == "EOS") {
       m.eos_type = c.require_attribute("type");
@@ -92,7 +101,7 @@ IceMaterialSpec parse_material(const DeckNode& mat, int index, GeometryRegistry&
         c.fail("unknown EOS type '" + m.eos_type + "' (implemented: " + join(equation_of_state_types()) + ")");
       }
       for (const DeckNode& p : c.children)
-        if (!params.has(p.name) || m.eos_type == "ideal_gas")
+        if (!params.used(p.name))
           p.fail("EOS type '" + m.eos_type + "' has no parameter <" + p.name + ">");
     } else if (c.name == "geom_object") {
       m.sources.push_back(parse_source(c, geometry));

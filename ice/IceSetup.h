@@ -29,7 +29,7 @@ struct IceMaterialSpec {
   std::string eos_type;
   EquationOfStateP eos;
   double gamma = 0, cv = 0;  // <gamma>, <specific_heat>
-  double dynamic_viscosity = 0, thermal_conductivity = 0;  // only 0 supported so far
+  double dynamic_viscosity = 0, thermal_conductivity = 0;  // mu [Pa s], k [W/(m K)] (ice/Diffusion.h)
   double tiny_rho = 1e-12;   // <tiny_rho>: rho_CC = tiny_rho * rho_micro where a material is absent
   std::vector<IceSource> sources;
 };

@@ -6,6 +6,7 @@
 
 #include "core/base/Errors.h"
 #include "core/grid/Loop.h"
+#include "ice/Diffusion.h"
 #include "ice/Equilibration.h"
 #include "ice/Exchange.h"
 #include "ice/IceAdvection.h"
@@ -221,6 +222,7 @@ void IceComponent::lagrangian_values_and_exchange(double dt) {
       for_each_cell(patch.cells_with_extra(), [&](int i, int j, int k) {
         mass_L_[m][pi](i, j, k) = f.rho_CC[pi](i, j, k) * V;
       });
+      compute_diffusion_sources(m, pi);
       for_each_cell(patch.cells(), [&](int i, int j, int k) {
         const IntVec3 c(i, j, k);
         const double mass = mass_L_[m][pi](c);
@@ -230,10 +232,13 @@ void IceComponent::lagrangian_values_and_exchange(double dt) {
           const GridArray<double>& pf = press_FC_.at(d, pi);
           grad_p[d] = (pf(IntVec3(c + IntVec3::Unit(d))) - pf(c)) / g.dx[d];
         }
-        const Vec3 mom_L = mass * f.vel_CC[pi](c) + dt * (-V * theta * grad_p + mass * setup_.gravity);
+        // Viscous force and conduction (Diffusion.h): dt V div(theta tau), dt V div(theta k grad T).
+        const Vec3 mom_L =
+            mass * f.vel_CC[pi](c) + dt * (-V * theta * grad_p + mass * setup_.gravity + V * visc_force_[pi](c));
         const double ss = f.speedSound_CC[pi](c);
         const double kappa = f.sp_vol_CC[pi](c) / (ss * ss);
-        const double eint_L = mass * cv * f.temp_CC[pi](c) + V * theta * kappa * press_CC_[pi](c) * delP_Dilatate_[pi](c);
+        const double eint_L = mass * cv * f.temp_CC[pi](c) +
+                              V * theta * kappa * press_CC_[pi](c) * delP_Dilatate_[pi](c) + dt * V * heat_[pi](c);
         vel_L_[m][pi](c) = mom_L / mass;
         temp_L_[m][pi](c) = eint_L / (mass * cv);
       });
@@ -325,6 +330,43 @@ void IceComponent::lagrangian_values_and_exchange(double dt) {
     halo_->exchange(vel_L_[m]);
     halo_->exchange(temp_L_[m]);
     halo_->exchange(spv_L_[m]);
+  }
+}
+
+// Viscous force div(theta tau) and conduction div(theta k grad T) of material
+// m on patch pi (Diffusion.h), into visc_force_ and heat_. The extra cells of
+// a Dirichlet velocity or temperature are mirrored about the wall value
+// (q_e = 2 q_wall - q_inner) so that the wall sits on the boundary face;
+// Uintah puts the Dirichlet value in the extra cell itself (the wall half a
+// cell outside the domain), which makes the Rayleigh problem first order.
+void IceComponent::compute_diffusion_sources(std::size_t m, std::size_t pi) {
+  const Grid& g = setup_.grid;
+  const Patch& patch = g.patches[pi];
+  const IceMaterialSpec& spec = setup_.materials[m];
+  const IceMaterialFields& f = mats_[m];
+  visc_force_[pi].fill(Vec3::Zero());
+  heat_[pi].fill(0.0);
+  if (spec.dynamic_viscosity != 0.0) {
+    vel_bc_[pi] = f.vel_CC[pi];
+    for (int face = 0; face < 6; ++face) {
+      const IceFaceBc& bc = setup_.bcs[m][face][kBcVelocity];
+      if (bc.kind != BCKind::Dirichlet) continue;
+      for_each_boundary_cell(g, patch, static_cast<GridFace>(face), [&](const IntVec3& e, const IntVec3& in) {
+        vel_bc_[pi](e) = 2.0 * bc.vector - vel_bc_[pi](in);
+      });
+    }
+    add_viscous_force(g, patch, vel_bc_[pi], f.vol_frac_CC[pi], spec.dynamic_viscosity, visc_force_[pi]);
+  }
+  if (spec.thermal_conductivity != 0.0) {
+    temp_bc_[pi] = f.temp_CC[pi];
+    for (int face = 0; face < 6; ++face) {
+      const IceFaceBc& bc = setup_.bcs[m][face][kBcTemperature];
+      if (bc.kind != BCKind::Dirichlet) continue;
+      for_each_boundary_cell(g, patch, static_cast<GridFace>(face), [&](const IntVec3& e, const IntVec3& in) {
+        temp_bc_[pi](e) = 2.0 * bc.scalar - temp_bc_[pi](in);
+      });
+    }
+    add_heat_conduction(g, patch, temp_bc_[pi], f.vol_frac_CC[pi], spec.thermal_conductivity, heat_[pi]);
   }
 }
 

@@ -71,7 +71,7 @@ using EquationOfStateP = std::unique_ptr<EquationOfState>;
 // <EOS>; every creator marks what it reads.
 EquationOfStateP create_equation_of_state(const std::string& type, const ModelParameters& params,
                                           const EosMaterialConstants& constants);
-std::vector<std::string> equation_of_state_types();         // implemented: {"ideal_gas"}
+std::vector<std::string> equation_of_state_types();         // implemented (all of Vaango's but KumariDass)
 const std::vector<std::string>& vaango_equation_of_state_types();  // every ICE EOS type of Vaango's schema
 
 }  // namespace tephra

@@ -2,6 +2,7 @@
 #include <map>
 
 #include "models/eos/EquationOfState.h"
+#include "models/eos/EosModels.h"
 #include "models/eos/IdealGas.h"
 
 namespace tephra {
@@ -21,6 +22,19 @@ const std::map<std::string, Creator>& creators() {
          if (!(c.cv > 0.0)) p.fail("specific_heat", "ideal_gas needs specific_heat > 0");
          return std::make_unique<IdealGas>(c.gamma, c.cv);
        }},
+      {"hard_sphere_gas", make_hard_sphere_gas},
+      {"TST", make_tst},
+      {"JWL", make_jwl},
+      {"JWLC", make_jwlc},
+      {"Murnaghan", make_murnaghan},
+      {"BirchMurnaghan", make_birch_murnaghan},
+      {"Gruneisen", make_gruneisen},
+      {"Tillotson", make_tillotson},
+      {"Thomsen_Hartka_water", make_thomsen_hartka_water},
+      {"KnaussSeaWater", make_knauss_sea_water},
+      // KumariDass: not registered. Vaango's KumariDass.cc is not a usable
+      // EOS (rho(p) does not depend on p, p(rho0) = 1/lambda instead of 0,
+      // dp/drho < 0 for lambda B0 > B0'); a deck naming it gets MissingFeature.
   };
   return m;
 }

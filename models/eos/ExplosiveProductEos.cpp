@@ -1,0 +1,84 @@
+// Explosive EOS: JWL (Jones-Wilkins-Lee, with a thermal term) and JWLC (the
+// JWL++ form with a cold C term, no temperature). Formulas: Uintah/Vaango ICE
+// (JWL.cc, JWLC.cc); derivatives re-derived here.
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+#include "models/eos/DensitySolve.h"
+#include "models/eos/EosModels.h"
+#include "models/eos/PointEos.h"
+
+namespace tephra {
+
+namespace {
+
+// JWL, V = rho0/rho (relative volume), cv = the material's specific heat:
+//   p = A exp(-R1 V) + B exp(-R2 V) + om cv T rho
+//   dp/drho|_T = (R1 V P1 + R2 V P2)/rho + om cv T     (dV/drho = -V/rho)
+//   dp/dT|_rho = om cv rho   => dp/de = om rho
+// rho(p, T): bracketed Newton from [0, 1.001 p/(om cv T)] upwards (Uintah's
+// starting bracket; p(0) = 0 < p).
+struct Jwl {
+  double A, B, R1, R2, om, rho0, cv;
+  PointThermo point(double rho, double T) const {
+    const double V = rho0 / rho, P1 = A * std::exp(-R1 * V), P2 = B * std::exp(-R2 * V);
+    return {P1 + P2 + om * cv * T * rho, (R1 * V * P1 + R2 * V * P2) / rho + om * cv * T, om * cv * rho};
+  }
+  double density(double p, double T) const {
+    return solve_density_bracketed(
+        [&](double r) {
+          const PointThermo t = point(r, T);
+          return std::pair{t.p - p, t.dp_drho};
+        },
+        0.0, std::max(1.001 * p / (om * cv * T), 1e-3 * rho0));
+  }
+  double heat_capacity(double, double, double) const { return cv; }
+};
+
+// JWLC (Souers' JWL++ product EOS), temperature independent:
+//   p = A exp(-R1 V) + B exp(-R2 V) + C (rho/rho0)^(1 + om)
+//   dp/drho = (R1 V P1 + R2 V P2)/rho + (1 + om) P3/rho,  dp/de = 0
+struct Jwlc {
+  double A, B, C, R1, R2, om, rho0;
+  PointThermo point(double rho, double) const {
+    const double V = rho0 / rho, P1 = A * std::exp(-R1 * V), P2 = B * std::exp(-R2 * V);
+    const double P3 = C * std::pow(rho / rho0, 1.0 + om);
+    return {P1 + P2 + P3, (R1 * V * P1 + R2 * V * P2 + (1.0 + om) * P3) / rho, 0.0};
+  }
+  double density(double p, double T) const {
+    return solve_density_bracketed(
+        [&](double r) {
+          const PointThermo t = point(r, T);
+          return std::pair{t.p - p, t.dp_drho};
+        },
+        0.0, rho0);
+  }
+  double heat_capacity(double, double, double) const { return 1.0; }  // unused: dp/dT = 0
+};
+
+}  // namespace
+
+EquationOfStateP make_jwl(const ModelParameters& p, const EosMaterialConstants& c) {
+  Jwl m{eos_positive(p, "A"), p.get_double("B"), eos_positive(p, "R1"), eos_positive(p, "R2"),
+        eos_positive(p, "om"), eos_positive(p, "rho0"), c.cv};
+  // Vaango's JWL reads neither <Cv> nor <C>; the thermal term uses the
+  // material's <specific_heat>. The EOSData files carry Tarver's volumetric
+  // Cv [Pa/K] = rho0 cv: accepted when it agrees with rho0 * specific_heat
+  // (1 %), otherwise the deck contradicts itself.
+  if (p.has("Cv")) {
+    const double Cv = p.get_double("Cv");
+    if (!(std::abs(Cv - m.rho0 * m.cv) <= 0.01 * m.rho0 * m.cv))
+      p.fail("Cv", "JWL <Cv> = " + std::to_string(Cv) + " Pa/K disagrees with rho0 * specific_heat = " +
+                       std::to_string(m.rho0 * m.cv) + " (Vaango's JWL uses specific_heat and ignores <Cv>)");
+  }
+  return make_point_eos("JWL", m);
+}
+
+EquationOfStateP make_jwlc(const ModelParameters& p, const EosMaterialConstants&) {
+  Jwlc m{eos_positive(p, "A"), p.get_double("B"), p.get_double("C"), eos_positive(p, "R1"),
+         eos_positive(p, "R2"), eos_positive(p, "om"), eos_positive(p, "rho0")};
+  return make_point_eos("JWLC", m);
+}
+
+}  // namespace tephra
