@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <set>
 
+#include "core/base/Log.h"
 #include "core/deck/DeckLoader.h"
 #include "core/deck/DeckNode.h"
 #include "ice/Exchange.h"
@@ -100,9 +101,16 @@ IceMaterialSpec parse_material(const DeckNode& mat, int index, GeometryRegistry&
           c.missing_feature("EOS type '" + m.eos_type + "' (implemented: " + join(equation_of_state_types()) + ")");
         c.fail("unknown EOS type '" + m.eos_type + "' (implemented: " + join(equation_of_state_types()) + ")");
       }
-      for (const DeckNode& p : c.children)
-        if (!params.used(p.name))
-          p.fail("EOS type '" + m.eos_type + "' has no parameter <" + p.name + ">");
+      for (const DeckNode& p : c.children) {
+        if (params.used(p.name)) continue;
+        // Vaango's JWL reads no <C> (only JWLC has that term), yet stock decks
+        // (MPMICE/BurnRate.ups) write one: accept it the way Vaango does, and say so.
+        if (m.eos_type == "JWL" && p.name == "C") {
+          log::warning(p.location().str() + ": <C> is not a JWL parameter (Vaango ignores it); ignored");
+          continue;
+        }
+        p.fail("EOS type '" + m.eos_type + "' has no parameter <" + p.name + ">");
+      }
     } else if (c.name == "geom_object") {
       m.sources.push_back(parse_source(c, geometry));
     } else if (c.name == "tiny_rho") {
