@@ -220,9 +220,19 @@ void velocity_gradients(const Stencils& s, const NodeGrid& g, std::vector<Mat3>&
   const Vec3* vstar = g.velocity_star.data();
 #pragma omp parallel for schedule(static) if (np >= kMinParallel)
   for (std::size_t i = 0; i < np; ++i) {
-    Mat3 l = Mat3::Zero();
-    for (std::size_t k = i * W; k < (i + 1) * W; ++k) l += vstar[node[k]] * grad[k].transpose();
-    L[i] = l;
+    // l(r,c) += v*_r dS/dx_c, written out in scalars (the Eigen expression
+    // built a temporary 3x3 per entry); the same products and sums in the same
+    // order, so the same bits.
+    double l[3][3] = {};
+    for (std::size_t k = i * W; k < (i + 1) * W; ++k) {
+      const Vec3& v = vstar[node[k]];
+      const Vec3& gr = grad[k];
+      for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 3; ++c) l[r][c] += v[r] * gr[c];
+    }
+    Mat3& Li = L[i];
+    for (int r = 0; r < 3; ++r)
+      for (int c = 0; c < 3; ++c) Li(r, c) = l[r][c];
   }
 }
 

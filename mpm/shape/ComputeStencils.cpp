@@ -51,6 +51,7 @@ bool fill_particle(const Particles& p, const NodeGrid& g, const InterpolatorSpec
     if (!(xi[d] >= 0.0 && xi[d] < g.n[d] - 1)) return false;
   }
   int count = 0;
+  bool support_inside = false;  // tensor-product support inside the grid on every axis
   if constexpr (K == InterpolatorKind::Cpdi) {
     const Mat3 edges = p.F[i] * p.psize[i];
     if (!edges.allFinite() || edges.cwiseAbs().maxCoeff() > 4.0 * (g.n.maxCoeff() + 1)) return false;
@@ -64,10 +65,26 @@ bool fill_particle(const Particles& p, const NodeGrid& g, const InterpolatorSpec
       if constexpr (K == InterpolatorKind::QuadraticBspline) ax[d] = quadratic_bspline_axis(xi[d]);
     }
     count = tensor_product(ax, g.h, node, w, grad);
+    support_inside = true;
+    for (int d = 0; d < 3; ++d)
+      support_inside = support_inside && ax[d].first >= 0 && ax[d].first + ax[d].count <= g.n[d];
   }
   // Every node with a weight or gradient must exist; a zero entry that falls
   // outside (a support touching the last node layer) is clamped harmlessly.
   const std::size_t base = i * W;
+  if (support_inside) {  // the common case: no per-entry range check or clamping
+    for (int k = 0; k < count; ++k) {
+      s.node[base + k] = g.index(node[k]);
+      s.w[base + k] = w[k];
+      s.grad[base + k] = grad[k];
+    }
+    for (int k = count; k < W; ++k) {
+      s.node[base + k] = s.node[base];
+      s.w[base + k] = 0.0;
+      s.grad[base + k] = Vec3::Zero();
+    }
+    return true;
+  }
   for (int k = 0; k < count; ++k) {
     bool inside = true;
     for (int d = 0; d < 3; ++d) inside = inside && node[k][d] >= 0 && node[k][d] < g.n[d];

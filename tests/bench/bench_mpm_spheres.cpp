@@ -11,7 +11,8 @@
 // 200, the deck's 2 ms) with the deck's rule dt = min(0.5 dt_stable, delt_max)
 // (the time loop's output and checkpoints are left out), then prints
 //   particle-steps/s = particles * steps / wall time of the steps,
-//   the same per thread (the machine's cores may be shared: a figure, not a test),
+//   the same per thread, and per CPU-second of the process (user + system: on
+//   a shared machine the wall figure includes waiting for a core),
 //   VmHWM / particles (bytes per particle, whole process: libraries included),
 //   (VmHWM - VmRSS before the component was built) / particles,
 // and the per-phase table of the steps (PhaseTimers).
@@ -25,6 +26,7 @@
 #include <sstream>
 #include <string>
 
+#include <sys/resource.h>
 #include <unistd.h>
 
 #include "core/base/PhaseTimers.h"
@@ -45,6 +47,13 @@ double proc_status_bytes(const char* key) {
   while (std::getline(in, line))
     if (line.rfind(key, 0) == 0) return 1024.0 * std::atof(line.c_str() + std::string(key).size() + 1);
   return 0.0;
+}
+
+// User + system CPU time of this process [s] (all its threads).
+double cpu_seconds() {
+  rusage u{};
+  getrusage(RUSAGE_SELF, &u);
+  return u.ru_utime.tv_sec + 1e-6 * u.ru_utime.tv_usec + u.ru_stime.tv_sec + 1e-6 * u.ru_stime.tv_usec;
 }
 
 int run_one(const std::string& interp, int threads, int steps) {
@@ -77,6 +86,7 @@ int run_one(const std::string& interp, int threads, int steps) {
   phase_timers() = PhaseTimers{};  // the table shows the steps only
   const double delt_max = 1.0e-5, multiplier = 0.5;
   double t = 0.0;
+  const double cpu_start = cpu_seconds();
   const auto start = std::chrono::steady_clock::now();
   for (int k = 1; k <= steps; ++k) {
     const double dt = std::min(multiplier * c->stable_timestep(), delt_max);
@@ -84,11 +94,13 @@ int run_one(const std::string& interp, int threads, int steps) {
     t += dt;
   }
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const double cpu = cpu_seconds() - cpu_start;
   const double hwm = proc_status_bytes("VmHWM");
   const double rate = double(particles) * steps / wall;
   std::printf("%-8s threads %d  particles %zu  steps %d  t = %.3e s  wall %.3f s\n", interp.c_str(), threads,
               particles, steps, t, wall);
-  std::printf("  particle-steps/s %.3e   per thread %.3e\n", rate, rate / threads);
+  std::printf("  particle-steps/s %.3e   per thread %.3e   per CPU-second %.3e (CPU %.3f s)\n", rate,
+              rate / threads, double(particles) * steps / cpu, cpu);
   std::printf("  VmHWM %.1f MB = %.0f B/particle; above the pre-build RSS: %.0f B/particle\n", hwm / 1048576.0,
               hwm / particles, (hwm - rss_before) / particles);
   std::printf("%s\n", phase_timers().table(wall).c_str());
