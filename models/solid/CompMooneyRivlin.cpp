@@ -8,6 +8,7 @@
 
 #include "models/ModelParameters.h"
 #include "models/solid/Kinematics.h"
+#include "models/solid/PointLoop.h"
 
 namespace tephra {
 
@@ -38,19 +39,18 @@ SolidPointResult comp_mooney_rivlin_point(const Eigen::Matrix3d& F, double densi
 }
 
 long CompMooneyRivlin::update(const SolidUpdateInput& in, const SolidUpdateOutput& out) const {
-  const size_t n = in.F_new.size();
-  for (size_t i = 0; i < n; ++i) {
+  return for_each_point(in.F_new.size(), [&](size_t i) {
     const double J = in.F_new[i].determinant();
-    if (!(J > 0.0) || !std::isfinite(J)) return static_cast<long>(i);
+    if (!(J > 0.0) || !std::isfinite(J)) return false;
     const SolidPointResult r = comp_mooney_rivlin_point(in.F_new[i], in.density0, p_);
-    if (!r.stress.allFinite() || !std::isfinite(r.wave_speed)) return static_cast<long>(i);
+    if (!r.stress.allFinite() || !std::isfinite(r.wave_speed)) return false;
     out.stress[i] = r.stress;
     out.wave_speed[i] = r.wave_speed;
     out.energy_density[i] = r.energy_density;
     out.plastic_work[i] = 0.0;
     out.heating[i] = 0.0;
-  }
-  return -1;
+    return true;
+  });
 }
 
 ConstitutiveModelP CompMooneyRivlin::create(const ModelParameters& params) {

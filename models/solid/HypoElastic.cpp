@@ -7,6 +7,7 @@
 
 #include "models/ModelParameters.h"
 #include "models/solid/Kinematics.h"
+#include "models/solid/PointLoop.h"
 
 namespace tephra {
 
@@ -33,19 +34,18 @@ SolidPointResult hypo_elastic_point(const Eigen::Matrix3d& F_old, const Eigen::M
 }
 
 long HypoElastic::update(const SolidUpdateInput& in, const SolidUpdateOutput& out) const {
-  const size_t n = in.F_new.size();
-  for (size_t i = 0; i < n; ++i) {
+  return for_each_point(in.F_new.size(), [&](size_t i) {
     const double J0 = in.F_old[i].determinant(), J = in.F_new[i].determinant();
-    if (!(J0 > 0.0) || !(J > 0.0) || !std::isfinite(J) || !std::isfinite(J0)) return static_cast<long>(i);
+    if (!(J0 > 0.0) || !(J > 0.0) || !std::isfinite(J) || !std::isfinite(J0)) return false;
     const SolidPointResult r = hypo_elastic_point(in.F_old[i], in.F_new[i], in.stress_old[i], in.density0, p_);
-    if (!r.stress.allFinite()) return static_cast<long>(i);
+    if (!r.stress.allFinite()) return false;
     out.stress[i] = r.stress;
     out.wave_speed[i] = r.wave_speed;
     out.energy_density[i] = r.energy_density;
     out.plastic_work[i] = 0.0;
     out.heating[i] = 0.0;
-  }
-  return -1;
+    return true;
+  });
 }
 
 std::optional<SolidEosPoint> HypoElastic::pressure_at_density(double rho, double density0, double) const {

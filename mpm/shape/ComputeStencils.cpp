@@ -1,4 +1,5 @@
 // compute_stencils: one template instance per interpolator, chosen once.
+#include <algorithm>
 #include <cmath>
 
 #include "mpm/NodeGrid.h"
@@ -33,46 +34,46 @@ std::string interpolator_name(InterpolatorKind k) {
 
 namespace {
 
+// Fills the W entries of particle i; false when its support leaves the grid
+// (or its CPDI domain is degenerate). Writes only particle i's entries.
 template <InterpolatorKind K>
-long fill(const Particles& p, const NodeGrid& g, const InterpolatorSpec& spec, Stencils& s) {
+bool fill_particle(const Particles& p, const NodeGrid& g, const InterpolatorSpec& spec, std::size_t i,
+                   Stencils& s) {
   constexpr int W = K == InterpolatorKind::Linear ? 8 : (K == InterpolatorKind::Cpdi ? 64 : 27);
   IntVec3 node[64];
   double w[64];
   Vec3 grad[64];
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    // Range check in floating point first: a NaN or huge coordinate must not
-    // reach the float -> int conversion of a node index.
-    Vec3 xi;
+  // Range check in floating point first: a NaN or huge coordinate must not
+  // reach the float -> int conversion of a node index.
+  Vec3 xi;
+  for (int d = 0; d < 3; ++d) {
+    xi[d] = (p.x[i][d] - g.origin[d]) / g.h[d];
+    if (!(xi[d] >= 0.0 && xi[d] < g.n[d] - 1)) return false;
+  }
+  int count = 0;
+  bool support_inside = false;  // tensor-product support inside the grid on every axis
+  if constexpr (K == InterpolatorKind::Cpdi) {
+    const Mat3 edges = p.F[i] * p.psize[i];
+    if (!edges.allFinite() || edges.cwiseAbs().maxCoeff() > 4.0 * (g.n.maxCoeff() + 1)) return false;
+    if (!cpdi_stencil(xi, edges, spec.cpdi_lcrit, g.h, node, w, grad)) return false;
+    count = 64;
+  } else {
+    ShapeAxis ax[3];
     for (int d = 0; d < 3; ++d) {
-      xi[d] = (p.x[i][d] - g.origin[d]) / g.h[d];
-      if (!(xi[d] >= 0.0 && xi[d] < g.n[d] - 1)) return static_cast<long>(i);
+      if constexpr (K == InterpolatorKind::Linear) ax[d] = linear_axis(xi[d]);
+      if constexpr (K == InterpolatorKind::Gimp) ax[d] = gimp_axis(xi[d], 0.5 * p.psize[i](d, d));
+      if constexpr (K == InterpolatorKind::QuadraticBspline) ax[d] = quadratic_bspline_axis(xi[d]);
     }
-    int count = 0;
-    if constexpr (K == InterpolatorKind::Cpdi) {
-      const Mat3 edges = p.F[i] * p.psize[i];
-      if (!edges.allFinite() || edges.cwiseAbs().maxCoeff() > 4.0 * (g.n.maxCoeff() + 1))
-        return static_cast<long>(i);
-      if (!cpdi_stencil(xi, edges, spec.cpdi_lcrit, g.h, node, w, grad)) return static_cast<long>(i);
-      count = 64;
-    } else {
-      ShapeAxis ax[3];
-      for (int d = 0; d < 3; ++d) {
-        if constexpr (K == InterpolatorKind::Linear) ax[d] = linear_axis(xi[d]);
-        if constexpr (K == InterpolatorKind::Gimp) ax[d] = gimp_axis(xi[d], 0.5 * p.psize[i](d, d));
-        if constexpr (K == InterpolatorKind::QuadraticBspline) ax[d] = quadratic_bspline_axis(xi[d]);
-      }
-      count = tensor_product(ax, g.h, node, w, grad);
-    }
-    // Every node with a weight or gradient must exist; a zero entry that falls
-    // outside (a support touching the last node layer) is clamped harmlessly.
-    const std::size_t base = i * W;
+    count = tensor_product(ax, g.h, node, w, grad);
+    support_inside = true;
+    for (int d = 0; d < 3; ++d)
+      support_inside = support_inside && ax[d].first >= 0 && ax[d].first + ax[d].count <= g.n[d];
+  }
+  // Every node with a weight or gradient must exist; a zero entry that falls
+  // outside (a support touching the last node layer) is clamped harmlessly.
+  const std::size_t base = i * W;
+  if (support_inside) {  // the common case: no per-entry range check or clamping
     for (int k = 0; k < count; ++k) {
-      bool inside = true;
-      for (int d = 0; d < 3; ++d) inside = inside && node[k][d] >= 0 && node[k][d] < g.n[d];
-      if (!inside) {
-        if (w[k] != 0.0 || grad[k] != Vec3::Zero()) return static_cast<long>(i);
-        node[k] = node[k].cwiseMax(IntVec3::Zero()).cwiseMin(g.n - IntVec3::Ones());
-      }
       s.node[base + k] = g.index(node[k]);
       s.w[base + k] = w[k];
       s.grad[base + k] = grad[k];
@@ -82,8 +83,39 @@ long fill(const Particles& p, const NodeGrid& g, const InterpolatorSpec& spec, S
       s.w[base + k] = 0.0;
       s.grad[base + k] = Vec3::Zero();
     }
+    return true;
   }
-  return -1;
+  for (int k = 0; k < count; ++k) {
+    bool inside = true;
+    for (int d = 0; d < 3; ++d) inside = inside && node[k][d] >= 0 && node[k][d] < g.n[d];
+    if (!inside) {
+      if (w[k] != 0.0 || grad[k] != Vec3::Zero()) return false;
+      node[k] = node[k].cwiseMax(IntVec3::Zero()).cwiseMin(g.n - IntVec3::Ones());
+    }
+    s.node[base + k] = g.index(node[k]);
+    s.w[base + k] = w[k];
+    s.grad[base + k] = grad[k];
+  }
+  for (int k = count; k < W; ++k) {
+    s.node[base + k] = s.node[base];
+    s.w[base + k] = 0.0;
+    s.grad[base + k] = Vec3::Zero();
+  }
+  return true;
+}
+
+// All particles, split among the OpenMP threads (each writes its own
+// entries, so the stencils do not depend on the thread count). The result is
+// the lowest failing index, as a serial loop that stops at the first would
+// return; -1 when every particle is fine.
+template <InterpolatorKind K>
+long fill(const Particles& p, const NodeGrid& g, const InterpolatorSpec& spec, Stencils& s) {
+  const long np = static_cast<long>(p.size());
+  long bad = np;
+#pragma omp parallel for schedule(static) reduction(min : bad) if (np >= 4096)
+  for (long i = 0; i < np; ++i)
+    if (!fill_particle<K>(p, g, spec, std::size_t(i), s)) bad = std::min(bad, i);
+  return bad < np ? bad : -1;
 }
 
 }  // namespace
