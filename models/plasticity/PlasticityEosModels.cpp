@@ -92,7 +92,7 @@ std::unique_ptr<PlasticityEos> make_hypo(const ModelParameters& p, const SubMode
 std::unique_ptr<PlasticityEos> make_hyper(const ModelParameters& p, const SubModelContext& c) {
   return std::make_unique<DefaultHyper>(bulk(p, c));
 }
-std::unique_ptr<PlasticityEos> make_mg(const ModelParameters& p, const std::string& key) {
+std::unique_ptr<PlasticityEos> make_mg(const ModelParameters& p, const SubModelContext& c, const std::string& key) {
   auto m = std::make_unique<MieGruneisen>();
   m->key = key;
   m->C0 = positive_parameter(p, "C_0");
@@ -100,14 +100,16 @@ std::unique_ptr<PlasticityEos> make_mg(const ModelParameters& p, const std::stri
   m->S1 = p.get_double("S_alpha");
   m->S2 = p.get_double("S_2", 0.0);
   m->S3 = p.get_double("S_3", 0.0);
-  m->rho0 = positive_parameter(p, "rho_0");
+  // <rho_0>, or the material's <density> (most MaterialData/MieGruneisen*.xml omit it).
+  m->rho0 = p.has("rho_0") ? p.get_double("rho_0") : c.density0;
+  if (!(m->rho0 > 0)) p.fail("rho_0", "needs a positive <rho_0> (here) or the material's <density>");
   return m;
 }
-std::unique_ptr<PlasticityEos> make_mg1(const ModelParameters& p, const SubModelContext&) {
-  return make_mg(p, "mie_gruneisen");
+std::unique_ptr<PlasticityEos> make_mg1(const ModelParameters& p, const SubModelContext& c) {
+  return make_mg(p, c, "mie_gruneisen");
 }
-std::unique_ptr<PlasticityEos> make_mge(const ModelParameters& p, const SubModelContext&) {
-  return make_mg(p, "mie_gruneisen_energy");
+std::unique_ptr<PlasticityEos> make_mge(const ModelParameters& p, const SubModelContext& c) {
+  return make_mg(p, c, "mie_gruneisen_energy");
 }
 std::unique_ptr<PlasticityEos> make_air(const ModelParameters&, const SubModelContext&) {
   return std::make_unique<Air>();

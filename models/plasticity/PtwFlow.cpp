@@ -10,7 +10,8 @@
 // plastic strain ψ = ε_p, as here. Tags: <p> is d, <beta> is s_1, <M> the
 // atomic mass in amu. μ and T_m come from the state (ptw_shear and a melting
 // model); <G0>, <alpha>, <alphap> (schema: optional) are PTW's shear-modulus
-// constants, accepted and unused here (ptw_shear holds them).
+// constants, accepted and unused here (ptw_shear holds them). d = 0 is the
+// Voce limit τ = τ_s - (τ_s - τ_y) exp(-θψ/(τ_s - τ_y)) of (10.24).
 #include "models/plasticity/FlowAd.h"
 
 namespace tephra {
@@ -31,6 +32,8 @@ class PtwFlow final : public FlowStressModel {
     const S ts = max(S(s0) - S(s0 - sinf) * erf(arg), S(s0) * pow(ratio, s1));
     const S ty = max(S(y0) - S(y0 - yinf) * erf(arg), min(S(y1) * pow(ratio, y2), S(s0) * pow(ratio, s1)));
     if (value(ty) >= value(ts)) return ts;  // shock regime
+    if (d == 0.0)  // the d -> 0 limit of (10.24): Voce, τ = τ_s - (τ_s - τ_y) exp(-θψ/(τ_s - τ_y))
+      return ts - (ts - ty) * exp(-S(theta) * psi / (ts - ty));
     const S a = (S(s0) - ty) / S(d);
     const S b = (ts - ty) / a;
     const S phi = exp(b) - S(1.0);
@@ -51,7 +54,8 @@ class PtwFlow final : public FlowStressModel {
 FlowStressModelP create_ptw_flow(const ModelParameters& p, const SubModelContext&) {
   auto m = std::make_unique<PtwFlow>();
   m->theta = p.get_double("theta");
-  m->d = positive_parameter(p, "p");
+  m->d = p.get_double("p");  // d = 0 (MaterialData/PTWPlasticTa.xml): the Voce limit
+  if (m->d < 0) p.fail("p", "must be non-negative");
   m->s0 = positive_parameter(p, "s0");
   m->sinf = p.get_double("sinf");
   m->kappa = p.get_double("kappa");

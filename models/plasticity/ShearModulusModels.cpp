@@ -62,7 +62,7 @@ class NpShear final : public ShearModulusModel {
 
 // ptw_shear, eq. 7.9-7.10: μ = μ_0 (1 + β p̄/η^{1/3}) (1 - α_p T/T_m), with
 // β = <slope_mu_p_over_mu0> (per μ_0, as Vaango's PTWShear). <alpha> is read
-// but unused (Vaango's PTWShear requires it and uses only <alphap>); the deck
+// but unused (Vaango's PTWShear uses only <alphap>); the deck
 // children <C>, <m>, <zeta> (MaterialData/PTWShear*.xml, copied from np_shear)
 // are schema-valid and have no meaning for this model: accepted and unused.
 class PtwShear final : public ShearModulusModel {
@@ -105,8 +105,10 @@ std::unique_ptr<ShearModulusModel> make_np(const ModelParameters& p, const SubMo
 std::unique_ptr<ShearModulusModel> make_ptw(const ModelParameters& p, const SubModelContext&) {
   auto m = std::make_unique<PtwShear>();
   m->mu0 = positive_parameter(p, "mu_0");
-  (void)p.get_double("alpha");
-  m->alphap = p.get_double("alphap");
+  // Both optional in Vaango's schema; MaterialData/NPShearTa.xml (type ptw_shear
+  // with np_shear's children) has neither: α_p = 0 then (no thermal softening).
+  (void)p.get_double("alpha", 0.0);
+  m->alphap = p.get_double("alphap", 0.0);
   m->slope = p.get_double("slope_mu_p_over_mu0");
   for (const char* unused : {"C", "m", "zeta"}) (void)p.get_double(unused, 0.0);
   return m;

@@ -135,6 +135,16 @@ TEST(SubmodelFlow, PtwAndMtsSoftenTowardsMelt) {
   s.melt_temperature = 1356;
   s.shear_modulus = 45e9;
   EXPECT_EQ(create_flow_stress_model("preston_tonks_wallace", p)->evaluate(s).sigma_y, 0.0);
+  // d = <p> -> 0: the thermal-regime law tends to its Voce limit (d = 0 branch).
+  PlasticState t = at(0.1, 1e3, 600);
+  t.melt_temperature = 1356;
+  t.shear_modulus = 45e9;
+  auto with_d = [&](double d) {
+    auto q = flow_samples().at("preston_tonks_wallace");
+    q["p"] = d;
+    return create_flow_stress_model("preston_tonks_wallace", MapModelParameters(q))->evaluate(t).sigma_y;
+  };
+  EXPECT_NEAR(with_d(1e-7) / with_d(0.0), 1.0, 1e-5);
 }
 
 // Inventory ch. 6 [DERIVED]: default_hyper κ = 1e9, J = 0.9 -> p = -1.0556e8; MG table.
