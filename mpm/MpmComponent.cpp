@@ -213,7 +213,7 @@ void MpmComponent::advance(double t, double dt, int step) {
   //    only if the start velocity is v(-dt_0/2). Vaango starts from v(0),
   //    which leaves an O(dt) = O(h) displacement error (docs/mpm-convergence.md:
   //    at 16^3 it moves with dt; with v(-dt_0/2) it does not); so the first
-  //    step (t = 0, also after no restart) replaces v(0) by v(-dt_0/2).
+  //    step (t = 0; a restart resumes at t > 0) replaces v(0) by v(-dt_0/2).
   for (MpmMaterial& m : mats)
     if (m.mms) {
       PhaseTimers::Scope timer(phase_timers(), "MPM: apply external loads");
