@@ -160,6 +160,10 @@ void initialize_mms_particles(const ManufacturedSolution& mms, Particles& p) {
   }
 }
 
+void set_mms_velocity(const ManufacturedSolution& mms, double t, Particles& p) {
+  for (std::size_t i = 0; i < p.size(); ++i) p.v[i] = mms.velocity(p.x[i] - p.displacement[i], t);
+}
+
 void apply_mms_body_force(const ManufacturedSolution& mms, double t, Particles& p) {
   for (std::size_t i = 0; i < p.size(); ++i) p.external_force[i] = p.mass[i] * mms.body_force(p.x[i] - p.displacement[i], t);
 }

@@ -57,6 +57,9 @@ std::unique_ptr<ManufacturedSolution> make_mms(const std::string& name, const Cn
 // Sets the initial state of particles seeded at reference positions X = p.x:
 // x = X + u(X,0), u_p = u(X,0), v = du/dt(X,0), F = F(X,0), V = det F V0.
 void initialize_mms_particles(const ManufacturedSolution& mms, Particles& p);
+// v_p = du/dt(X_p, t), X_p = x_p - u_p: the leapfrog start velocity
+// v(-dt/2) of the first step (see MpmComponent::advance).
+void set_mms_velocity(const ManufacturedSolution& mms, double t, Particles& p);
 // f_ext,p = m_p b(X_p, t), X_p = x_p - u_p.
 void apply_mms_body_force(const ManufacturedSolution& mms, double t, Particles& p);
 // L2 norm of the displacement error over the particles, weighted by the

@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
 
 #include "core/deck/DeckLoader.h"
 #include "core/deck/DeckNode.h"
@@ -18,8 +21,10 @@ DeckNode& child(DeckNode& n, const std::string& name) {
 }
 }  // namespace
 
-MmsRunResult run_axis_aligned(const std::string& interpolator, int cells, double end_time,
-                              int particles_per_cell_dir) {
+MmsRunResult run_axis_aligned(const MmsRunOptions& o) {
+  const std::string& interpolator = o.interpolator;
+  const int cells = o.cells, particles_per_cell_dir = o.particles_per_cell_dir;
+  const double end_time = o.end_time;
   auto deck = load_deck(shared_dir() + "/decks/inputs/MPM/AA.ups");
   DeckNode& root = deck->root;
   child(child(root, "MPM"), "interpolator").text = interpolator;
@@ -30,7 +35,8 @@ MmsRunResult run_axis_aligned(const std::string& interpolator, int cells, double
   const std::string r = std::to_string(particles_per_cell_dir);
   child(child(mat, "geom_object"), "res").text = "[" + r + "," + r + "," + r + "]";
   const DeckNode& time = root.require_child("Time");
-  const double multiplier = time.get_double("timestep_multiplier");
+  const double multiplier =
+      o.timestep_multiplier > 0.0 ? o.timestep_multiplier : time.get_double("timestep_multiplier");
   const double delt_max = time.get_double("delt_max");
 
   const auto start = std::chrono::steady_clock::now();
@@ -46,6 +52,18 @@ MmsRunResult run_axis_aligned(const std::string& interpolator, int cells, double
     t += dt;
   }
   out.error = comp->mms_displacement_error();
+  if (std::getenv("TEPHRA_MMS_BANDS")) {
+    const auto& m = comp->materials()[0];
+    double num[4] = {0, 0, 0, 0}, cnt[4] = {0, 0, 0, 0};
+    for (std::size_t i = 0; i < m.particles.size(); ++i) {
+      const Vec3 X = m.particles.x[i] - m.particles.displacement[i];
+      const double dist = std::min(X.minCoeff(), 1.0 - X.maxCoeff()) * cells;  // cells to nearest face
+      const int b = dist < 1 ? 0 : dist < 2 ? 1 : dist < 3 ? 2 : 3;
+      num[b] += (m.particles.displacement[i] - m.mms->displacement(X, t)).squaredNorm();
+      cnt[b] += 1;
+    }
+    for (int b = 0; b < 4; ++b) std::printf("  band %d: rms %.3e (n %g)\n", b, std::sqrt(num[b] / cnt[b]), cnt[b]);
+  }
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return out;
 }

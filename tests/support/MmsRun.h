@@ -1,12 +1,22 @@
 #pragma once
 // Runs the AxisAligned manufactured solution (shared/decks/inputs/MPM/AA.ups)
-// in-process with a chosen interpolator, cells per side and end time, with the
-// deck's time-step rule (timestep_multiplier x stable dt, capped by delt_max),
-// and returns the L2 displacement error at the end and the wall time. Used by
-// tests/verification/test_mpm_mms.cpp and tests/bench/bench_mms_work_precision.cpp.
+// in-process with a chosen interpolator, cells per side, particles per cell
+// direction and end time, with the deck's time-step rule (timestep_multiplier
+// x stable dt, capped by delt_max, last step landing on end_time) or another
+// multiplier, and returns the L2 displacement error at the end and the wall
+// time. Used by tests/verification/test_mpm_mms.cpp and
+// tests/bench/bench_mms_work_precision.cpp.
 #include <string>
 
 namespace tephra::test {
+
+struct MmsRunOptions {
+  std::string interpolator = "gimp";
+  int cells = 16;               // cells per side of the unit cube
+  double end_time = 0.02;       // the deck's maxTime
+  int particles_per_cell_dir = 2;  // the deck's res [2,2,2]
+  double timestep_multiplier = 0.0;  // 0: the deck's (0.2)
+};
 
 struct MmsRunResult {
   double error = 0.0;    // MMSDisplacementErrorL2 at end_time
@@ -15,7 +25,6 @@ struct MmsRunResult {
   int steps = 0;
 };
 
-MmsRunResult run_axis_aligned(const std::string& interpolator, int cells, double end_time,
-                              int particles_per_cell_dir = 2);
+MmsRunResult run_axis_aligned(const MmsRunOptions& options);
 
 }  // namespace tephra::test

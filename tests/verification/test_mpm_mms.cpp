@@ -1,0 +1,100 @@
+// Spatial convergence of explicit MPM on the AxisAligned manufactured
+// solution (shared/decks/inputs/MPM/AA.ups; Vaango's study
+// orderAccuracy/MPM/gimp_dx.tst runs the same deck at 8, 16, 32 cells per
+// side). Exact solution u_i = A sin(pi X_i) sin(c pi t + phi_i) (mpm/mms/);
+// error = sqrt(mean over particles |u_p - u(X_p, t)|^2), X_p = x_p - u_p
+// (Uintah puda -AA_MMS_2, the norm compare_MPM_AA_MMS.m reads).
+//
+// Settings (docs/mpm-convergence.md): end time 0.005 s (a quarter period
+// instead of the deck's full period 0.02 s) and 1 particle per cell direction
+// (the deck has 2), to keep the 32^3 runs within seconds; the deck's step
+// rule 0.2 x stable dt. The first step starts from v(-dt/2) (leapfrog), so the
+// time error is O(dt^2) and below the spatial error: at 16^3 the error is
+// 1.1511e-3, 1.1514e-3, 1.1519e-3, 1.1523e-3 for multipliers 0.2, 0.1, 0.05,
+// 0.025. Observed order = log2(e_16 / e_32) (the finest pair), required
+// >= 1.8 (second-order interpolators).
+//
+// One thread per run: ctest runs two tests at once on the 2-core machine.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+
+#include "core/grid/Loop.h"
+#include "tests/support/MmsRun.h"
+
+namespace tephra::test {
+namespace {
+
+struct Threads {
+  int saved = thread_count();
+  explicit Threads(int n) { set_thread_count(n); }
+  ~Threads() { set_thread_count(saved); }
+};
+
+struct Study {
+  double e[3] = {0, 0, 0};  // 8, 16, 32 cells per side
+  double order(int k) const { return std::log2(e[k] / e[k + 1]); }
+};
+
+Study run_study(const std::string& interpolator) {
+  Threads one(1);
+  Study s;
+  const int cells[3] = {8, 16, 32};
+  for (int k = 0; k < 3; ++k) {
+    MmsRunOptions o;
+    o.interpolator = interpolator;
+    o.cells = cells[k];
+    o.end_time = 0.005;
+    o.particles_per_cell_dir = 1;
+    const MmsRunResult r = run_axis_aligned(o);
+    s.e[k] = r.error;
+    std::printf("AA %-10s %2d^3: L2 error %.4e (%d steps, %.2f s)\n", interpolator.c_str(), cells[k], r.error, r.steps,
+                r.seconds);
+  }
+  std::printf("AA %-10s orders: %.2f (8->16), %.2f (16->32)\n", interpolator.c_str(), s.order(0), s.order(1));
+  return s;
+}
+
+TEST(MpmMmsConvergence, CpdiSecondOrder) {
+  const Study s = run_study("cpdi");
+  EXPECT_GE(s.order(1), 1.8);
+  EXPECT_GE(s.order(0), 1.6);  // pre-asymptotic pair: observed 1.77
+}
+
+// gimp and 3rdorderBS stall at 16 -> 32 (observed orders 1.53 and 0.51 with
+// these settings, identical for both: with one particle per cell the uGIMP
+// weights are the quadratic B-spline). The stall is spatial (independent of
+// dt, see above) and uniform over the cube (not a boundary layer); it is not
+// fixed yet (docs/mpm-convergence.md, "Open"). Disabled, not loosened: enable
+// when the cause is fixed.
+TEST(MpmMmsConvergence, DISABLED_GimpSecondOrder) {
+  const Study s = run_study("gimp");
+  EXPECT_GE(s.order(1), 1.8);
+}
+
+TEST(MpmMmsConvergence, DISABLED_QuadraticBsplineSecondOrder) {
+  const Study s = run_study("3rdorderBS");
+  EXPECT_GE(s.order(1), 1.8);
+}
+
+// Linear shape functions, for the record (no bound): the error grows from 8^3
+// to 16^3 (cell-crossing noise) and at 32^3 a particle inverts before t =
+// 0.005 (NumericalFailure).
+TEST(MpmMmsConvergence, LinearForTheRecord) {
+  Threads one(1);
+  double e[2];
+  for (int k = 0; k < 2; ++k) {
+    MmsRunOptions o;
+    o.interpolator = "linear";
+    o.cells = 8 << k;
+    o.end_time = 0.005;
+    o.particles_per_cell_dir = 1;
+    e[k] = run_axis_aligned(o).error;
+    std::printf("AA linear     %2d^3: L2 error %.4e\n", o.cells, e[k]);
+  }
+  EXPECT_GT(e[1], e[0]);  // the known failure of linear MPM to converge here
+}
+
+}  // namespace
+}  // namespace tephra::test
