@@ -361,7 +361,7 @@ void IceComponent::compute_diffusion_sources(std::size_t m, std::size_t pi) {
       if (bc.kind != BCKind::Dirichlet) continue;
       for_each_boundary_cell(g, patch, static_cast<GridFace>(face), [&](const IntVec3& e, const IntVec3& in) {
         vel_bc_[pi](e) = 2.0 * bc.vector - vel_bc_[pi](in);
-      });
+      }, vel_bc_[pi].ghost_width());
     }
     add_viscous_force(g, patch, vel_bc_[pi], f.vol_frac_CC[pi], spec.dynamic_viscosity, visc_force_[pi]);
   }
@@ -372,7 +372,7 @@ void IceComponent::compute_diffusion_sources(std::size_t m, std::size_t pi) {
       if (bc.kind != BCKind::Dirichlet) continue;
       for_each_boundary_cell(g, patch, static_cast<GridFace>(face), [&](const IntVec3& e, const IntVec3& in) {
         temp_bc_[pi](e) = 2.0 * bc.scalar - temp_bc_[pi](in);
-      });
+      }, temp_bc_[pi].ghost_width());
     }
     add_heat_conduction(g, patch, temp_bc_[pi], f.vol_frac_CC[pi], spec.thermal_conductivity, heat_[pi]);
   }

@@ -9,10 +9,12 @@
 // 2. Low-Mach contact: a periodic 1-D box of air moving at u = 1 m/s (Mach
 //    0.003) with a hot slab at the same pressure. Exact solution: the slab
 //    translates, p and u stay uniform. For an ideal gas with one c_v the
-//    conservative transport of mass and internal energy keeps p = (gamma-1) E
-//    uniform, so p and u must stay uniform to the solver tolerance, and with
-//    a uniform face velocity the centroid of the density deficit moves by
-//    exactly u t (conservative fluxes). Implicit with knob 0 takes
+//    conservative (compatible) transport of mass, internal energy and
+//    specific volume keeps p = (gamma-1) E uniform, so p and u must stay
+//    uniform to the solver tolerance, and with a uniform face velocity the
+//    centroid of the density deficit moves by u t (the deficit is zero where
+//    the periodic face wraps). Observed: |p/p0 - 1| 2e-14, |u - 1| 2e-10,
+//    centroid shift 0.25 to 1e-9 in 41 steps (second order). Implicit with knob 0 takes
 //    dt = cfl dx/|u|, explicit dt = cfl dx/(c + |u|): ratio (c + u)/u ~ 348.
 // 3. The unmodified orderAccuracy/ICE/rayleigh.ups (periodic in x,
 //    ImplicitSolver, TimestepControl aggressive with knob 0): u_x against
@@ -114,7 +116,7 @@ std::string low_mach_deck(const std::string& extra_ice) {
   <MaterialProperties><ICE><material><EOS type="ideal_gas"/><dynamic_viscosity>0</dynamic_viscosity>
     <thermal_conductivity>0</thermal_conductivity><specific_heat>716</specific_heat><gamma>1.4</gamma>
     <geom_object><box label="hot"><min>[0.25,-1,-1]</min><max>[0.5,1,1]</max></box><res>[2,2,2]</res>
-      <velocity>[1,0,0]</velocity><density>1.06983</density><pressure>101325</pressure><temperature>330</temperature>
+      <velocity>[1,0,0]</velocity><density>1.0698445454545454</density><pressure>101325</pressure><temperature>330</temperature>
     </geom_object>
     <geom_object><box label="all"><min>[-1,-1,-1]</min><max>[2,2,2]</max></box><res>[2,2,2]</res>
       <velocity>[1,0,0]</velocity><density>1.176829</density><pressure>101325</pressure><temperature>300</temperature>
@@ -144,7 +146,10 @@ TEST(IceImplicit, LowMachContactTakesLargeStepsAndKeepsPressureUniform) {
   test::IceRun ex = test::make_ice_run(write("explicit.ups", low_mach_deck("")));
   test::IceRun im = test::make_ice_run(write("implicit.ups", low_mach_deck(solver)));
   const double dt_ex = ex.ice->stable_timestep(), dt_im = im.ice->stable_timestep();
-  const double c = ex.ice->fields()[0].speedSound_CC[0](0, 0, 0);
+  double c = 0;  // the largest sound speed (the hot slab) sets the explicit step
+  for (std::size_t pi = 0; pi < ex.ice->grid().patches.size(); ++pi)
+    for_each_cell_serial(ex.ice->grid().patches[pi].cells(),
+                         [&](int i, int j, int k) { c = std::max(c, ex.ice->fields()[0].speedSound_CC[pi](i, j, k)); });
   std::printf("low Mach: dt explicit %.4e, implicit %.4e, ratio %.1f (expected (c+u)/u = %.1f)\n", dt_ex, dt_im,
               dt_im / dt_ex, (c + 1.0) / 1.0);
   EXPECT_NEAR(dt_im / dt_ex, c + 1.0, 1e-6 * c);  // dt = cfl dx/|u| against cfl dx/(c + |u|)
@@ -163,14 +168,16 @@ TEST(IceImplicit, LowMachContactTakesLargeStepsAndKeepsPressureUniform) {
   const double x0 = deficit_centroid(im);
   test::run_to(im);
   EXPECT_NEAR(im.time, 0.25, 1e-14);
+  // p0 = (gamma - 1) cv rho T = 0.4 * 716 * 1.176829 * 300 (both slabs: rho_hot = rho_cold 300/330).
+  const double p0 = 0.4 * 716.0 * 1.176829 * 300.0;
   double dp = 0, du = 0;
   for (std::size_t pi = 0; pi < g.patches.size(); ++pi)
     for_each_cell_serial(g.patches[pi].cells(), [&](int i, int, int) {
-      dp = std::max(dp, std::abs(im.ice->press_CC()[pi](i, 0, 0) / 101325.0 - 1.0));
+      dp = std::max(dp, std::abs(im.ice->press_CC()[pi](i, 0, 0) / p0 - 1.0));
       du = std::max(du, std::abs(im.ice->fields()[0].vel_CC[pi](i, 0, 0)[0] - 1.0));
     });
   const double shift = deficit_centroid(im) - x0;
-  std::printf("low Mach implicit: %d steps, max |p/p0 - 1| = %.2e, max |u - 1| = %.2e, centroid shift %.6f (exact 0.25)\n",
+  std::printf("low Mach implicit: %d steps, max |p/p0 - 1| = %.2e, max |u - 1| = %.2e, centroid shift %.9f (exact 0.25)\n",
               im.steps, dp, du, shift);
   EXPECT_LE(im.steps, 45);  // 0.25 s / (0.4 * 1/64 s) = 40 steps
   EXPECT_LT(dp, 1e-9);
