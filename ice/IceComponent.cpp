@@ -76,6 +76,7 @@ void IceComponent::initialize() {
     f.rho_micro_CC.fill(spec.sources[0].density);
     f.vol_frac_CC.fill(1.0);
     f.vel_CC.fill(Vec3::Zero());
+    f.mom_source_CC.fill(Vec3::Zero());
     for (std::size_t pi = 0; pi < g.patches.size(); ++pi) {
       for_each_cell(g.patches[pi].cells_with_extra(), [&](int i, int j, int k) {
         std::vector<int> count(spec.sources.size(), 0);

@@ -241,8 +241,9 @@ void IceComponent::lagrangian_values_and_exchange(double dt) {
           grad_p[d] = (pf(IntVec3(c + IntVec3::Unit(d))) - pf(c)) / g.dx[d];
         }
         // Viscous force and conduction (Diffusion.h): dt V div(theta tau), dt V div(theta k grad T).
-        const Vec3 mom_L =
-            mass * f.vel_CC[pi](c) + dt * (-V * theta * grad_p + mass * setup_.gravity + V * visc_force_[pi](c));
+        const Vec3 source = dt * (-V * theta * grad_p + mass * setup_.gravity + V * visc_force_[pi](c));
+        f.mom_source_CC[pi](c) = source;
+        const Vec3 mom_L = mass * f.vel_CC[pi](c) + source;
         const double ss = f.speedSound_CC[pi](c);
         const double kappa = f.sp_vol_CC[pi](c) / (ss * ss);
         const double eint_L = mass * cv * f.temp_CC[pi](c) +

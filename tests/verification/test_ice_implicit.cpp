@@ -185,6 +185,29 @@ TEST(IceImplicit, LowMachContactTakesLargeStepsAndKeepsPressureUniform) {
   EXPECT_NEAR(shift, 0.25, 1e-6);
 }
 
+// TimestepControl "conservative" (Uintah's swept-volume rule) on the low-Mach
+// deck: uniform u = 1 along x, no gravity or diffusion. Per cell the outflow
+// characteristic speeds are, along x, (1 + c) on the high face and (c - 1) on
+// the low face, along y and z c on both, with c = knob max(c_L, c_R); so
+//   dt = cfl V / sum_d 2 c A_d = cfl / (2 c sum_d 1/dx_d),
+// set by the hot slab's (largest) c. knob 0.5 halves c.
+TEST(IceImplicit, ConservativeTimestepIsTheSweptVolumeBound) {
+  const std::string dir = test::scratch_dir("ice_conservative_dt");
+  for (double knob : {1.0, 0.5}) {
+    const std::string tc = "<TimestepControl><Scheme_for_delT_calc>conservative</Scheme_for_delT_calc>"
+                           "<knob_for_speedSound>" + std::to_string(knob) + "</knob_for_speedSound></TimestepControl>";
+    std::ofstream(dir + "/c.ups") << low_mach_deck(tc);
+    test::IceRun r = test::make_ice_run(dir + "/c.ups");
+    const Grid& g = r.ice->grid();
+    double c = 0;
+    for (std::size_t pi = 0; pi < g.patches.size(); ++pi)
+      for_each_cell_serial(g.patches[pi].cells(),
+                           [&](int i, int j, int k) { c = std::max(c, r.ice->fields()[0].speedSound_CC[pi](i, j, k)); });
+    const double expected = 0.4 / (2.0 * knob * c * (1 / g.dx[0] + 1 / g.dx[1] + 1 / g.dx[2]));
+    EXPECT_NEAR(r.ice->stable_timestep(), expected, 1e-12 * expected) << "knob " << knob;
+  }
+}
+
 TEST(IceImplicit, UnmodifiedRayleighDeckMatchesStokesFirstProblem) {
   set_thread_count(1);
   test::IceRun r = test::make_ice_run(test::shared_dir() + "/decks/orderAccuracy/ICE/rayleigh.ups");
