@@ -23,7 +23,7 @@ T slab_value(const Grid& g, AdvectionOrder order, const GridArray<T>& q, int d, 
   const IntVec3 e = IntVec3::Unit(d);
   const IntVec3 D = phi > 0.0 ? IntVec3(face - e) : face;
   if (order == AdvectionOrder::First) return q(D);
-  if (D[d] < 0 || D[d] >= g.cells[d]) return q(D);  // extra cell: no slope
+  if (!g.periodic[d] && (D[d] < 0 || D[d] >= g.cells[d])) return q(D);  // extra cell: no slope (periodic: ghosts wrap)
   const T dq = van_leer(T(q(D) - q(D - e)), T(q(D + e) - q(D)));
   const double s = phi > 0.0 ? 1.0 : -1.0;
   return q(D) + dq * (s * 0.5 * (1.0 - std::abs(phi)));

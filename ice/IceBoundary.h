@@ -15,13 +15,22 @@ namespace tephra {
 
 // Calls fn(extra_cell, inner_cell) for each extra cell of patch p on domain
 // face f (none if p does not touch f). The tangential range covers the
-// patch's extra cells, so edges and corners get a value too.
+// patch's extra cells, so edges and corners get a value too, and, in periodic
+// tangential directions, `periodic_ghosts` ghost layers (for a field whose
+// ghosts already hold the periodic images of the inner cells and that is not
+// exchanged again after this BC: the corner ghosts then get the same value as
+// the extra cells they are images of).
 template <class Fn>
-void for_each_boundary_cell(const Grid& g, const Patch& p, GridFace f, Fn&& fn) {
+void for_each_boundary_cell(const Grid& g, const Patch& p, GridFace f, Fn&& fn, int periodic_ghosts = 0) {
   const int d = face_axis(f);
   const bool up = face_is_upper(f);
   if (up ? p.extra_hi[d] <= p.hi[d] : p.extra_lo[d] >= p.lo[d]) return;
   IntVec3 lo = p.extra_lo, hi = p.extra_hi;
+  for (int t = 0; t < 3; ++t)
+    if (t != d && g.periodic[t]) {
+      lo[t] -= periodic_ghosts;
+      hi[t] += periodic_ghosts;
+    }
   lo[d] = up ? g.cells[d] : -1;
   hi[d] = lo[d] + 1;
   const IntVec3 in = up ? IntVec3(-IntVec3::Unit(d)) : IntVec3(IntVec3::Unit(d));

@@ -59,6 +59,12 @@ void IceComponent::initialize() {
   vel_bc_ = CellVectors(g, kGhosts);
   heat_ = CellScalars(g, kGhosts);
   temp_bc_ = CellScalars(g, kGhosts);
+  if (setup_.implicit.enabled) {
+    pressure_solver_ = std::make_unique<PressureSolver>(g, setup_.implicit.hypre);
+    for (CellScalars& a : stencil_) a = CellScalars(g, kGhosts);
+    rhs_ = CellScalars(g, kGhosts);
+    delta_p_ = CellScalars(g, kGhosts);
+  }
 
   for (std::size_t m = 0; m < nm; ++m) {
     const IceMaterialSpec& spec = setup_.materials[m];
@@ -70,6 +76,7 @@ void IceComponent::initialize() {
     f.rho_micro_CC.fill(spec.sources[0].density);
     f.vol_frac_CC.fill(1.0);
     f.vel_CC.fill(Vec3::Zero());
+    f.mom_source_CC.fill(Vec3::Zero());
     for (std::size_t pi = 0; pi < g.patches.size(); ++pi) {
       for_each_cell(g.patches[pi].cells_with_extra(), [&](int i, int j, int k) {
         std::vector<int> count(spec.sources.size(), 0);
@@ -122,19 +129,56 @@ void IceComponent::initialize() {
   check_state(0, "initialization");
 }
 
-// Uintah's explicit ICE time step (computeStableTimestep):
-//   dt = cfl * min over materials, interior cells and directions d of
-//        dx_d / (c + |u_d|).
+// Uintah's ICE time step (computeStableTimestep), knob = knob_for_speedSound:
+//   aggressive:   dt = cfl * min over materials, interior cells, directions d
+//                 of dx_d / (knob c + |u_d|);
+//   conservative: dt = cfl * V / sum over the six faces of the outflow volume
+//                 per unit time, A_d max(0, +-u_char), with the characteristic
+//                 velocity u_char = (u_C + u_nb)/2 +- (knob max(c_L, c_R)
+//                 + |u_R - u_L| + sqrt(sum_d dx_d |g_d|) + D/|dx|) on the
+//                 high (+) and low (-) face along each direction. Uintah adds
+//                 max(k v/cp, mu)/|dx| (a dynamic viscosity, not a speed);
+//                 Tephra uses the kinematic D = max(k v/cv, mu v).
+// Implicit ICE (Uintah) uses the same formulas with knob 0.5 by default; decks
+// set 0 so that the step follows the flow speed alone.
 double IceComponent::stable_timestep() const {
   const Grid& g = setup_.grid;
   double dt = std::numeric_limits<double>::infinity();
-  for (const IceMaterialFields& f : mats_)
-    for (std::size_t pi = 0; pi < g.patches.size(); ++pi)
-      for_each_cell_serial(g.patches[pi].cells(), [&](int i, int j, int k) {
-        const double c = f.speedSound_CC[pi](i, j, k);
-        const Vec3& u = f.vel_CC[pi](i, j, k);
-        for (int d = 0; d < 3; ++d) dt = std::min(dt, g.dx[d] / (c + std::abs(u[d]) + 1e-100));
-      });
+  const double knob = setup_.delt_knob;
+  if (setup_.delt_scheme == DeltScheme::Aggressive) {
+    for (const IceMaterialFields& f : mats_)
+      for (std::size_t pi = 0; pi < g.patches.size(); ++pi)
+        for_each_cell_serial(g.patches[pi].cells(), [&](int i, int j, int k) {
+          const double c = knob * f.speedSound_CC[pi](i, j, k);
+          const Vec3& u = f.vel_CC[pi](i, j, k);
+          for (int d = 0; d < 3; ++d) dt = std::min(dt, g.dx[d] / (c + std::abs(u[d]) + 1e-100));
+        });
+  } else {
+    const Vec3 area(g.dx[1] * g.dx[2], g.dx[0] * g.dx[2], g.dx[0] * g.dx[1]);
+    const double V = g.cell_volume();
+    const double grav_vel = std::sqrt(g.dx.dot(setup_.gravity.cwiseAbs()));
+    for (std::size_t m = 0; m < mats_.size(); ++m) {
+      const IceMaterialFields& f = mats_[m];
+      const IceMaterialSpec& spec = setup_.materials[m];
+      for (std::size_t pi = 0; pi < g.patches.size(); ++pi)
+        for_each_cell_serial(g.patches[pi].cells(), [&](int i, int j, int k) {
+          const IntVec3 C(i, j, k);
+          const double v = f.sp_vol_CC[pi](C);
+          const double diff_vel =
+              std::max(spec.thermal_conductivity * v / spec.cv, spec.dynamic_viscosity * v) / g.dx.norm();
+          double swept = 0;
+          for (int d = 0; d < 3; ++d) {
+            const IntVec3 e = IntVec3::Unit(d);
+            const IntVec3 L = C - e, R = C + e;
+            const double uC = f.vel_CC[pi](C)[d], uL = f.vel_CC[pi](L)[d], uR = f.vel_CC[pi](R)[d];
+            const double c = std::max(f.speedSound_CC[pi](L), f.speedSound_CC[pi](R));
+            const double extra = knob * c + std::abs(uR - uL) + grav_vel + diff_vel;
+            swept += area[d] * (std::max(0.0, 0.5 * (uC + uR) + extra) + std::max(0.0, -(0.5 * (uC + uL) - extra)));
+          }
+          dt = std::min(dt, V / (swept + 1e-100));
+        });
+    }
+  }
   dt *= setup_.cfl;
   // Explicit diffusion limit (viscosity, conduction): the forward-Euler
   // stability bound of u_t = D lap u, dt <= 1/(2 D sum_d 1/dx_d^2), with
@@ -157,11 +201,23 @@ double IceComponent::stable_timestep() const {
 // One explicit ICE step (Vaango theory manual ch. 26 step list, pure-fluid
 // subset; inventory ch. 24 "ICE time step"). docs/ice.md has the equations.
 void IceComponent::advance(double /*t*/, double dt, int step) {
+  if (setup_.implicit.enabled) {
+    advance_with_restarts(dt, step, 0);
+    return;
+  }
+  advance_one(dt, step);
+}
+
+void IceComponent::advance_one(double dt, int step) {
   PhaseTimers& T = phase_timers();
   { PhaseTimers::Scope s(T, "ICE: equilibration pressure");       compute_equilibration_pressure(step); }
-  { PhaseTimers::Scope s(T, "ICE: face velocities");              compute_face_velocities(dt); }
-  { PhaseTimers::Scope s(T, "ICE: face momentum exchange");       add_exchange_to_face_velocities(dt); }
-  { PhaseTimers::Scope s(T, "ICE: pressure increment");           compute_delP_and_pressure(dt); }
+  if (setup_.implicit.enabled) {
+    PhaseTimers::Scope s(T, "ICE: implicit pressure");            implicit_pressure_solve(dt, step);
+  } else {
+    { PhaseTimers::Scope s(T, "ICE: face velocities");            compute_face_velocities(dt, press_equil_CC_); }
+    { PhaseTimers::Scope s(T, "ICE: face momentum exchange");     add_exchange_to_face_velocities(dt); }
+    { PhaseTimers::Scope s(T, "ICE: pressure increment");         compute_delP_and_pressure(dt); }
+  }
   { PhaseTimers::Scope s(T, "ICE: face pressure");                compute_face_pressure(); }
   { PhaseTimers::Scope s(T, "ICE: Lagrangian values, exchange");  lagrangian_values_and_exchange(dt); }
   { PhaseTimers::Scope s(T, "ICE: advection");                    advect_and_advance(dt, step); }

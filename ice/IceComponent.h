@@ -12,6 +12,7 @@
 #include "core/sim/Component.h"
 #include "ice/IceFields.h"
 #include "ice/IceSetup.h"
+#include "ice/PressureSolver.h"
 
 namespace tephra {
 
@@ -37,17 +38,32 @@ class IceComponent final : public Component {
   const CellScalars& press_CC() const { return press_CC_; }
   const CellScalars& press_equil_CC() const { return press_equil_CC_; }
   const CellScalars& delP_Dilatate() const { return delP_Dilatate_; }
+  // Implicit pressure: outer iterations of the last step (0 when explicit),
+  // and how many steps were redone with half the time step.
+  int last_outer_iterations() const { return last_outer_iterations_; }
+  int step_restarts() const { return step_restarts_; }
 
  private:
   // Phases of the step (IceStep.cpp), in order.
   void compute_equilibration_pressure(int step);
-  void compute_face_velocities(double dt);
+  void compute_face_velocities(double dt, const CellScalars& press);
   void add_exchange_to_face_velocities(double dt);
   void compute_delP_and_pressure(double dt);
   void compute_face_pressure();
   void lagrangian_values_and_exchange(double dt);
   void compute_diffusion_sources(std::size_t m, std::size_t pi);
   void advect_and_advance(double dt, int step);
+  // Implicit pressure (ImplicitPressure.cpp): replaces the face velocities,
+  // their exchange and the pressure increment of the explicit step.
+  void advance_one(double dt, int step);
+  void advance_with_restarts(double dt, int step, int depth);
+  void implicit_pressure_solve(double dt, int step);
+  void assemble_pressure_matrix(double dt);
+  double pressure_residual(double dt);  // fills rhs_, returns max |rhs|
+  void sum_volume_flux_and_kappa(double dt);
+  struct StepRestart {
+    std::string why;
+  };
 
   void apply_state_bcs(std::size_t m);  // rho, vel, temp, sp_vol extra cells of material m
   void check_state(int step, const char* phase) const;
@@ -69,6 +85,11 @@ class IceComponent final : public Component {
   // the velocity/temperature with the wall-mirrored extra cells they use.
   CellVectors visc_force_, vel_bc_;
   CellScalars heat_, temp_bc_;
+  // Implicit pressure: the solver, the matrix, the residual and the correction.
+  std::unique_ptr<PressureSolver> pressure_solver_;
+  StencilCoefficients stencil_;
+  CellScalars rhs_, delta_p_;
+  int last_outer_iterations_ = 0, step_restarts_ = 0;
 };
 
 // Reads <CFD><ICE>, <MaterialProperties><ICE>, <exchange_properties>,

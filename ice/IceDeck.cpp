@@ -1,5 +1,6 @@
 // make_ice_component: the ICE parts of a deck -> an IceComponent.
 #include <algorithm>
+#include <cctype>
 #include <set>
 
 #include "core/base/Log.h"
@@ -149,6 +150,113 @@ std::vector<double> parse_coefficients(const DeckNode* ec, const char* name, int
   return C;
 }
 
+std::string lower(std::string v) {
+  for (char& ch : v) ch = char(std::tolower(static_cast<unsigned char>(ch)));
+  return v;
+}
+
+// <TimestepControl> (Vaango's spelling; Uintah's ICE.cc reads <TimeStepControl>).
+void parse_timestep_control(const DeckNode& tc, IceSetup& s) {
+  const DeckNode& scheme = tc.require_child("Scheme_for_delT_calc");
+  const std::string v = scheme.as_string();
+  if (v == "aggressive") s.delt_scheme = DeltScheme::Aggressive;
+  else if (v == "conservative") s.delt_scheme = DeltScheme::Conservative;
+  else scheme.fail("Scheme_for_delT_calc must be 'aggressive' or 'conservative'");
+  const DeckNode& knob = tc.require_child("knob_for_speedSound");
+  s.delt_knob = knob.as_double();
+  if (!(s.delt_knob >= 0.0 && s.delt_knob <= 1.0)) knob.fail("knob_for_speedSound must be in [0, 1]");
+  for (const DeckNode& c : tc.children)
+    if (c.name != "Scheme_for_delT_calc" && c.name != "knob_for_speedSound")
+      c.missing_feature("<TimestepControl><" + c.name + ">");
+}
+
+// <ImplicitSolver> (ice_spec.xml): outer iterations and the hypre parameters.
+// Parameters that only tune Uintah's own CG solver (initial_tolerance,
+// criteria, norm) or hypre internals Tephra leaves at hypre's defaults (jump,
+// logging, setupFrequency) are read and have no effect; docs/ice.md says so.
+void parse_implicit_solver(const DeckNode& is, IceSetup& s) {
+  ImplicitSettings& im = s.implicit;
+  im.enabled = true;
+  const DeckNode& mo = is.require_child("max_outer_iterations");
+  im.max_outer_iterations = mo.as_int();
+  if (im.max_outer_iterations < 1) mo.fail("max_outer_iterations must be >= 1");
+  const DeckNode& ot = is.require_child("outer_iteration_tolerance");
+  im.outer_iteration_tolerance = ot.as_double();
+  if (!(im.outer_iteration_tolerance > 0)) ot.fail("outer_iteration_tolerance must be > 0");
+  if (const DeckNode* r = is.child("iters_before_timestep_restart")) {
+    im.iters_before_timestep_restart = r->as_int();
+    if (im.iters_before_timestep_restart < 1) r->fail("iters_before_timestep_restart must be >= 1");
+  }
+  const DeckNode& p = is.require_child("Parameters");
+  if (auto var = p.attribute("variable"); var && *var != "implicitPressure")
+    p.fail("<Parameters variable> must be 'implicitPressure'");
+  HypreSettings& h = im.hypre;
+  for (const DeckNode& c : p.children) {
+    if (c.name == "solver") {
+      const std::string v = lower(c.as_string());
+      if (v == "cg" || v == "gmres" || v == "pfmg" || v == "smg") h.solver = v;
+      else if (v == "sparsemsg" || v == "hybrid" || v == "amg") c.missing_feature("hypre solver '" + c.as_string() + "'");
+      else c.fail("unknown solver '" + c.as_string() + "' (cg, gmres, pfmg, smg)");
+    } else if (c.name == "preconditioner") {
+      const std::string v = lower(c.as_string());
+      if (v == "none" || v == "pfmg" || v == "smg" || v == "jacobi") h.preconditioner = v;
+      else c.fail("unknown preconditioner '" + c.as_string() + "' (none, pfmg, smg, jacobi)");
+    } else if (c.name == "tolerance") {
+      h.tolerance = c.as_double();
+      if (!(h.tolerance > 0)) c.fail("tolerance must be > 0");
+    } else if (c.name == "maxiterations") {
+      h.max_iterations = c.as_int();
+      if (h.max_iterations < 1) c.fail("maxiterations must be >= 1");
+    } else if (c.name == "npre") {
+      h.npre = c.as_int();
+    } else if (c.name == "npost") {
+      h.npost = c.as_int();
+    } else if (c.name == "skip") {
+      h.skip = c.as_int();
+    } else if (c.name == "relax_type") {
+      h.relax_type = c.as_int();
+      if (h.relax_type < 0 || h.relax_type > 3) c.fail("relax_type must be 0..3");
+    } else if (c.name == "norm" || c.name == "criteria" || c.name == "initial_tolerance" || c.name == "jump" ||
+               c.name == "logging" || c.name == "setupFrequency" || c.name == "outputEquations") {
+      // See the comment above: accepted, no effect on the hypre solve.
+    } else {
+      c.missing_feature("<ImplicitSolver><Parameters><" + c.name + ">");
+    }
+  }
+  if (!p.has_child("solver")) p.fail("<Parameters> needs <solver>");
+  if (!p.has_child("tolerance")) p.fail("<Parameters> needs <tolerance>");
+  // Uintah's bullet-proofing: the inner tolerance must be below the outer one.
+  if (h.tolerance >= im.outer_iteration_tolerance)
+    p.require_child("tolerance").fail("the solver <tolerance> must be smaller than <outer_iteration_tolerance>");
+  for (const DeckNode& c : is.children)
+    if (c.name != "max_outer_iterations" && c.name != "outer_iteration_tolerance" &&
+        c.name != "iters_before_timestep_restart" && c.name != "Parameters")
+      c.missing_feature("<ImplicitSolver><" + c.name + ">");
+}
+
+// Top-level <Solver type=...>: which linear solver runs the pressure
+// equation. Everything runs on hypre's structured interface: 'hypre' takes
+// <Parameters> as given; 'CGSolver' (Uintah's own Jacobi-preconditioned CG)
+// maps to hypre PCG with diagonal scaling; 'direct' maps to PCG with an SMG
+// preconditioner (an exact solve to round-off, the purpose of Uintah's
+// direct solver on small problems).
+void apply_solver_type(const DeckNode& root, IceSetup& s) {
+  const DeckNode* sv = root.child("Solver");
+  if (!sv) return;
+  const std::string type = sv->require_attribute("type");
+  if (type == "hypre") return;
+  if (type == "hypreamr") sv->missing_feature("Solver type 'hypreamr' (AMR)");
+  if (type == "CGSolver") {
+    s.implicit.hypre.solver = "cg";
+    s.implicit.hypre.preconditioner = "jacobi";
+  } else if (type == "direct") {
+    s.implicit.hypre.solver = "cg";
+    s.implicit.hypre.preconditioner = "smg";
+  } else {
+    sv->fail("unknown Solver type '" + type + "' (CGSolver, direct, hypre)");
+  }
+}
+
 void parse_cfd(const DeckNode& root, IceSetup& s) {
   const DeckNode& cfd = root.require_child("CFD");
   for (const DeckNode& c : cfd.children) {
@@ -169,6 +277,10 @@ void parse_cfd(const DeckNode& root, IceSetup& s) {
         } else if (i.name == "max_iteration_equilibration") {
           s.max_iter_equilibration = i.as_int();
           if (s.max_iter_equilibration < 1) i.fail("max_iteration_equilibration must be >= 1");
+        } else if (i.name == "TimestepControl") {
+          parse_timestep_control(i, s);
+        } else if (i.name == "ImplicitSolver") {
+          parse_implicit_solver(i, s);
         } else if (i.name == "ClampSpecificVolume") {
           if (i.as_bool()) i.missing_feature("<ClampSpecificVolume> true");
         } else {
@@ -184,6 +296,9 @@ void parse_cfd(const DeckNode& root, IceSetup& s) {
   if (!cfd.has_child("cfl")) cfd.fail("<CFD> needs <cfl>");
   const DeckNode& ice = cfd.require_child("ICE");
   ice.require_child("advection");
+  // Uintah: the speed-of-sound knob defaults to 0.5 when running implicit.
+  if (s.implicit.enabled && !ice.has_child("TimestepControl")) s.delt_knob = 0.5;
+  if (s.implicit.enabled) apply_solver_type(root, s);
 }
 
 IceFaceBc resolve(const BoundaryConditions& bcs, GridFace face, int m, const char* label, const DeckNode& grid_node) {
@@ -230,10 +345,13 @@ std::unique_ptr<IceComponent> make_ice_component(const Deck& deck) {
   IceSetup s;
   const DeckNode& grid_node = root.require_child("Grid");
   s.grid = make_grid(grid_node);
+  // A periodic direction has no extra cells (make_grid enforces it): its
+  // ghosts are filled by the halo exchange's periodic wrap, and no boundary
+  // condition is read for its two faces.
   for (int d = 0; d < 3; ++d) {
-    if (s.grid.periodic[d]) grid_node.missing_feature("ICE with periodic boundaries");
-    if (s.grid.extra_cells[d] != 1)
-      grid_node.missing_feature("ICE with extraCells != 1 (ICE needs exactly one layer of extra cells)");
+    if (!s.grid.periodic[d] && s.grid.extra_cells[d] != 1)
+      grid_node.missing_feature("ICE with extraCells != 1 in a non-periodic direction (ICE needs exactly one layer "
+                                "of extra cells)");
   }
   parse_cfd(root, s);
   if (const DeckNode* pc = root.child("PhysicalConstants")) {
@@ -283,13 +401,15 @@ std::unique_ptr<IceComponent> make_ice_component(const Deck& deck) {
   }
   s.bcs.resize(n);
   for (int m = 0; m < n; ++m)
-    for (int f = 0; f < 6; ++f)
+    for (int f = 0; f < 6; ++f) {
+      if (s.grid.periodic[face_axis(static_cast<GridFace>(f))]) continue;  // default IceFaceBc: never applied
       for (int l = 0; l < kBcLabels; ++l) {
         // Pressure is one field shared by all materials: Uintah reads its BC
         // from material 0 (or id="all").
         const int mat = l == kBcPressure ? 0 : m;
         s.bcs[m][f][l] = resolve(bcs, static_cast<GridFace>(f), mat, labels[l], grid_node);
       }
+    }
   return std::make_unique<IceComponent>(std::move(s));
 }
 

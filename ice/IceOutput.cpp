@@ -11,7 +11,7 @@ namespace {
 
 const char* const kCellLabels[] = {"press_CC",      "press_equil_CC", "delP_Dilatate", "rho_CC",      "temp_CC",
                                    "vel_CC",        "vol_frac_CC",    "sp_vol_CC",     "speedSound_CC", "rho_micro_CC",
-                                   "mom_L_ME_CC",   "eng_L_ME_CC"};
+                                   "mom_L_ME_CC",   "eng_L_ME_CC",    "mom_source_CC", "delP_MassX"};
 // Face-centred labels: accepted in <save>, not written yet (OutputFrame holds
 // cell and node fields only).
 const char* const kFaceLabels[] = {"uvel_FC", "vvel_FC", "wvel_FC", "uvel_FCME", "vvel_FCME", "wvel_FCME"};
@@ -88,6 +88,12 @@ void IceComponent::fill_output(const std::set<std::string>& labels, OutputFrame&
   if (want("press_CC")) put(gather(g, press_CC_, "press_CC", 0));
   if (want("press_equil_CC")) put(gather(g, press_equil_CC_, "press_equil_CC", 0));
   if (want("delP_Dilatate")) put(gather(g, delP_Dilatate_, "delP_Dilatate", 0));
+  // Pressure change by mass exchange (Uintah's delP_MassX): no reactions yet, so exactly 0.
+  if (want("delP_MassX")) {
+    CellScalars zero(g, 0);
+    zero.fill(0.0);
+    put(gather(g, zero, "delP_MassX", 0));
+  }
   for (std::size_t m = 0; m < mats_.size(); ++m) {
     const IceMaterialFields& f = mats_[m];
     const int mi = static_cast<int>(m);
@@ -100,6 +106,7 @@ void IceComponent::fill_output(const std::set<std::string>& labels, OutputFrame&
     if (want("rho_micro_CC")) put(gather(g, f.rho_micro_CC, "rho_micro_CC", mi));
     if (want("mom_L_ME_CC")) put(gather(g, f.mom_L_ME_CC, "mom_L_ME_CC", mi));
     if (want("eng_L_ME_CC")) put(gather(g, f.eng_L_ME_CC, "eng_L_ME_CC", mi));
+    if (want("mom_source_CC")) put(gather(g, f.mom_source_CC, "mom_source_CC", mi));
   }
   static bool warned = false;
   for (const char* l : kFaceLabels)

@@ -44,6 +44,33 @@ struct IceFaceBc {
   Vec3 vector = Vec3::Zero();
 };
 
+// <CFD><ICE><TimestepControl> (Uintah's computeStableTimestep):
+//   aggressive:   dt = cfl min_{cells,d} dx_d/(knob c + |u_d|)
+//   conservative: dt = cfl V / sum of the outflow volumes swept per unit time
+//                 through the six faces by a characteristic velocity
+//                 (face velocity + knob c + velocity jump + sqrt(dx.|g|) + diffusion velocity).
+// knob_for_speedSound defaults to 1 (explicit) and 0.5 with <ImplicitSolver> (Uintah).
+enum class DeltScheme { Aggressive, Conservative };
+
+// <ImplicitSolver> and its <Parameters variable="implicitPressure"> (the
+// pressure solve, ice/ImplicitPressure.h), with the top-level <Solver type>.
+struct HypreSettings {
+  std::string solver = "cg";          // cg | gmres | pfmg | smg (lower case)
+  std::string preconditioner = "pfmg";// none | pfmg | smg | jacobi
+  double tolerance = 1e-10;           // relative residual ||r||_2/||b||_2
+  int max_iterations = 100;
+  int npre = 1, npost = 1, skip = 0;
+  int relax_type = 1;                 // PFMG: 0 Jacobi, 1 weighted Jacobi, 2/3 red-black
+};
+
+struct ImplicitSettings {
+  bool enabled = false;
+  int max_outer_iterations = 20;
+  double outer_iteration_tolerance = 1e-8;  // max |residual| of the volume balance (dimensionless)
+  int iters_before_timestep_restart = 5;
+  HypreSettings hypre;
+};
+
 enum IceBcLabel { kBcPressure = 0, kBcVelocity, kBcTemperature, kBcDensity, kBcSpecificVol, kBcLabels };
 
 struct IceSetup {
@@ -51,6 +78,9 @@ struct IceSetup {
   std::vector<IceMaterialSpec> materials;
   AdvectionOrder advection = AdvectionOrder::First;
   double cfl = 0.5;
+  DeltScheme delt_scheme = DeltScheme::Aggressive;
+  double delt_knob = 1.0;  // knob_for_speedSound
+  ImplicitSettings implicit;
   int max_iter_equilibration = 100;
   Vec3 gravity = Vec3::Zero();
   double reference_pressure = 101325.0;  // read and kept; the ideal gas does not use it

@@ -79,7 +79,8 @@ void IceComponent::compute_equilibration_pressure(int step) {
 //   u* = (rho_L u_L + rho_R u_R)/(rho_L + rho_R)
 //        - dt * 2 v_L v_R/(v_L + v_R) * (p_R - p_L)/dx + g_d dt,
 // with rho = rho_CC (bulk), v = sp_vol, p = p_eq. Then the boundary faces.
-void IceComponent::compute_face_velocities(double dt) {
+// press is p_eq (explicit) or the current implicit pressure iterate.
+void IceComponent::compute_face_velocities(double dt, const CellScalars& press) {
   const Grid& g = setup_.grid;
   for (std::size_t m = 0; m < mats_.size(); ++m) {
     IceMaterialFields& f = mats_[m];
@@ -87,7 +88,7 @@ void IceComponent::compute_face_velocities(double dt) {
       const GridArray<double>& rho = f.rho_CC[pi];
       const GridArray<double>& v = f.sp_vol_CC[pi];
       const GridArray<Vec3>& u = f.vel_CC[pi];
-      const GridArray<double>& p = press_equil_CC_[pi];
+      const GridArray<double>& p = press[pi];
       for (int d = 0; d < 3; ++d) {
         GridArray<double>& uf = f.vel_FC.at(d, pi);
         const IntVec3 e = IntVec3::Unit(d);
@@ -152,6 +153,22 @@ void IceComponent::add_exchange_to_face_velocities(double dt) {
 //   press_CC = p_eq + delP, then the Pressure BC.
 void IceComponent::compute_delP_and_pressure(double dt) {
   const Grid& g = setup_.grid;
+  sum_volume_flux_and_kappa(dt);
+  for (std::size_t pi = 0; pi < g.patches.size(); ++pi) {
+    for_each_cell(g.patches[pi].cells(), [&](int i, int j, int k) {
+      delP_Dilatate_[pi](i, j, k) /= sum_kappa_[pi](i, j, k);
+      press_CC_[pi](i, j, k) = press_equil_CC_[pi](i, j, k) + delP_Dilatate_[pi](i, j, k);
+    });
+    for (int face = 0; face < 6; ++face)
+      apply_scalar_bc(g, g.patches[pi], static_cast<GridFace>(face), setup_.bcs[0][face][kBcPressure], press_CC_[pi]);
+  }
+  halo_->exchange(press_CC_);
+}
+
+// delP_Dilatate = sum_m A(theta_m) (net inflow of volume fraction with the
+// face velocities vel_FCME) and sum_kappa = sum_m theta_m v_m / c_m^2.
+void IceComponent::sum_volume_flux_and_kappa(double dt) {
+  const Grid& g = setup_.grid;
   delP_Dilatate_.fill(0.0);
   sum_kappa_.fill(0.0);
   for (std::size_t m = 0; m < mats_.size(); ++m) {
@@ -165,15 +182,6 @@ void IceComponent::compute_delP_and_pressure(double dt) {
         delP_Dilatate_[pi](i, j, k) += dq_[pi](i, j, k);
       });
   }
-  for (std::size_t pi = 0; pi < g.patches.size(); ++pi) {
-    for_each_cell(g.patches[pi].cells(), [&](int i, int j, int k) {
-      delP_Dilatate_[pi](i, j, k) /= sum_kappa_[pi](i, j, k);
-      press_CC_[pi](i, j, k) = press_equil_CC_[pi](i, j, k) + delP_Dilatate_[pi](i, j, k);
-    });
-    for (int face = 0; face < 6; ++face)
-      apply_scalar_bc(g, g.patches[pi], static_cast<GridFace>(face), setup_.bcs[0][face][kBcPressure], press_CC_[pi]);
-  }
-  halo_->exchange(press_CC_);
 }
 
 // Step 5 (eq. 26.4): p* = (p_L rho_R + p_R rho_L)/(rho_L + rho_R), rho = sum_m rho_CC_m.
@@ -233,8 +241,9 @@ void IceComponent::lagrangian_values_and_exchange(double dt) {
           grad_p[d] = (pf(IntVec3(c + IntVec3::Unit(d))) - pf(c)) / g.dx[d];
         }
         // Viscous force and conduction (Diffusion.h): dt V div(theta tau), dt V div(theta k grad T).
-        const Vec3 mom_L =
-            mass * f.vel_CC[pi](c) + dt * (-V * theta * grad_p + mass * setup_.gravity + V * visc_force_[pi](c));
+        const Vec3 source = dt * (-V * theta * grad_p + mass * setup_.gravity + V * visc_force_[pi](c));
+        f.mom_source_CC[pi](c) = source;
+        const Vec3 mom_L = mass * f.vel_CC[pi](c) + source;
         const double ss = f.speedSound_CC[pi](c);
         const double kappa = f.sp_vol_CC[pi](c) / (ss * ss);
         const double eint_L = mass * cv * f.temp_CC[pi](c) +
@@ -353,7 +362,7 @@ void IceComponent::compute_diffusion_sources(std::size_t m, std::size_t pi) {
       if (bc.kind != BCKind::Dirichlet) continue;
       for_each_boundary_cell(g, patch, static_cast<GridFace>(face), [&](const IntVec3& e, const IntVec3& in) {
         vel_bc_[pi](e) = 2.0 * bc.vector - vel_bc_[pi](in);
-      });
+      }, vel_bc_[pi].ghost_width());
     }
     add_viscous_force(g, patch, vel_bc_[pi], f.vol_frac_CC[pi], spec.dynamic_viscosity, visc_force_[pi]);
   }
@@ -364,7 +373,7 @@ void IceComponent::compute_diffusion_sources(std::size_t m, std::size_t pi) {
       if (bc.kind != BCKind::Dirichlet) continue;
       for_each_boundary_cell(g, patch, static_cast<GridFace>(face), [&](const IntVec3& e, const IntVec3& in) {
         temp_bc_[pi](e) = 2.0 * bc.scalar - temp_bc_[pi](in);
-      });
+      }, temp_bc_[pi].ghost_width());
     }
     add_heat_conduction(g, patch, temp_bc_[pi], f.vol_frac_CC[pi], spec.thermal_conductivity, heat_[pi]);
   }

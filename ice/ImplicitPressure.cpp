@@ -1,0 +1,188 @@
+// Semi-implicit pressure of ICE (Kashiwa et al., LA-13903; Uintah's
+// ICE::implicitPressureSolve / setupMatrix / setupRHS / updatePressure):
+// the face velocities depend on the end-of-step pressure, and the pressure
+// is found so that the volume fractions the faces move balance the
+// compressibility of the cell. docs/ice.md, "Implicit pressure".
+//
+// Unknown p (cell pressure). With kappa_m = v_m/c_m^2, A_m(u_f) the net
+// inflow of theta_m through the faces moved by the face velocities u_f(p)
+// (the advection operator of the explicit step), the volume balance is
+//   R(p) = sum_m theta_m kappa_m (p - p_eq) - sum_m A_m(u_f(p)) = 0.
+// The face velocity (eq. 26.1 with p instead of p_eq) changes with a
+// correction dp as u_f -> u_f - dt v_f (dp_R - dp_L)/dx_d, so the flux
+// theta_f u_f dt/dx_d changes by -a_f (dp_R - dp_L) with
+//   a_f = sum_m theta_f,m v_f,m dt^2/dx_d^2,
+//   theta_f = (theta_L + theta_R)/2,  v_f = 2 v_L v_R/(v_L + v_R).
+// Newton-like outer iterations solve the symmetric positive definite system
+//   (sum theta kappa + sum_faces a_f) dp_C - sum_faces a_f dp_nb = -R(p)
+// (the matrix neglects the exchange and the upwind switch of the flux; the
+// outer iterations carry the exact residual), p <- p + dp, until
+// max |R| < outer_iteration_tolerance. R is a volume fraction, so the
+// tolerance is dimensionless (as Uintah's max_RHS).
+// Boundary faces: a face whose velocity a BC fixes (Dirichlet velocity,
+// symmetry) has a_f = 0; a Dirichlet pressure keeps dp = 0 in the extra cell
+// (a_f on the diagonal only); a Neumann pressure moves the extra cell with the
+// interior (a_f drops out). Periodic faces couple through hypre's periodic grid.
+//
+// Failure: a linear solve that does not reach its tolerance, or more than
+// iters_before_timestep_restart outer iterations, restarts the step. Uintah
+// recomputes the step with dt * 0.75 (ICE::recomputeDelT); Tephra's time loop
+// owns dt, so here the interval is redone as two steps of dt/2 (recursively,
+// at most kMaxRestartDepth halvings, then NumericalFailure). No convergence
+// in max_outer_iterations: NumericalFailure (Uintah: ConvergenceFailure).
+#include <cmath>
+#include <sstream>
+
+#include "core/base/Errors.h"
+#include "core/base/Log.h"
+#include "core/grid/Loop.h"
+#include "ice/IceBoundary.h"
+#include "ice/IceComponent.h"
+
+namespace tephra {
+
+namespace {
+constexpr int kMaxRestartDepth = 4;
+}
+
+void IceComponent::advance_with_restarts(double dt, int step, int depth) {
+  // The state a failed attempt must restore (everything else is recomputed).
+  std::vector<CellScalars> rho, temp, spv;
+  std::vector<CellVectors> vel;
+  for (const IceMaterialFields& f : mats_) {
+    rho.push_back(f.rho_CC);
+    temp.push_back(f.temp_CC);
+    spv.push_back(f.sp_vol_CC);
+    vel.push_back(f.vel_CC);
+  }
+  const CellScalars press = press_CC_;
+  try {
+    advance_one(dt, step);
+    return;
+  } catch (const StepRestart& r) {
+    if (depth >= kMaxRestartDepth)
+      throw NumericalFailure("ICE implicit pressure at step " + std::to_string(step) + ": " + r.why + " after " +
+                             std::to_string(depth) + " halvings of the time step");
+    log::warning("ICE implicit pressure at step " + std::to_string(step) + ": " + r.why +
+                 "; redoing the step as two steps of dt/2");
+  }
+  for (std::size_t m = 0; m < mats_.size(); ++m) {
+    mats_[m].rho_CC = rho[m];
+    mats_[m].temp_CC = temp[m];
+    mats_[m].sp_vol_CC = spv[m];
+    mats_[m].vel_CC = vel[m];
+  }
+  press_CC_ = press;
+  ++step_restarts_;
+  advance_with_restarts(0.5 * dt, step, depth + 1);
+  advance_with_restarts(0.5 * dt, step, depth + 1);
+}
+
+// Matrix of the correction equation (comment at the top); depends on theta,
+// v and kappa of the equilibration, fixed over the outer iterations.
+void IceComponent::assemble_pressure_matrix(double dt) {
+  const Grid& g = setup_.grid;
+  const std::size_t nm = mats_.size();
+  for (std::size_t pi = 0; pi < g.patches.size(); ++pi) {
+    const Patch& patch = g.patches[pi];
+    for_each_cell(patch.cells(), [&](int i, int j, int k) {
+      const IntVec3 C(i, j, k);
+      double centre = 0;
+      for (std::size_t m = 0; m < nm; ++m) {
+        const IceMaterialFields& f = mats_[m];
+        const double c = f.speedSound_CC[pi](C);
+        centre += f.vol_frac_CC[pi](C) * f.sp_vol_CC[pi](C) / (c * c);
+      }
+      for (int d = 0; d < 3; ++d) {
+        const double r2 = dt * dt / (g.dx[d] * g.dx[d]);
+        for (int side = 0; side < 2; ++side) {
+          const IntVec3 N = side == 0 ? IntVec3(C - IntVec3::Unit(d)) : IntVec3(C + IntVec3::Unit(d));
+          const int entry = 1 + 2 * d + side;  // kWest, kEast, ...
+          const bool boundary = !g.periodic[d] && (N[d] < 0 || N[d] >= g.cells[d]);
+          const int face = 2 * d + side;      // GridFace order x-, x+, y-, ...
+          double a = 0;
+          for (std::size_t m = 0; m < nm; ++m) {
+            if (boundary) {
+              const BCKind vk = setup_.bcs[m][face][kBcVelocity].kind;
+              if (vk == BCKind::Dirichlet || vk == BCKind::Symmetry) continue;  // face velocity fixed
+            }
+            const IceMaterialFields& f = mats_[m];
+            const double theta_f = 0.5 * (f.vol_frac_CC[pi](C) + f.vol_frac_CC[pi](N));
+            const double vC = f.sp_vol_CC[pi](C), vN = f.sp_vol_CC[pi](N);
+            a += theta_f * 2.0 * vC * vN / (vC + vN) * r2;
+          }
+          if (boundary) {
+            stencil_[entry][pi](C) = 0.0;
+            if (setup_.bcs[0][face][kBcPressure].kind == BCKind::Dirichlet) centre += a;
+          } else {
+            stencil_[entry][pi](C) = -a;
+            centre += a;
+          }
+        }
+      }
+      stencil_[kCenter][pi](C) = centre;
+    });
+  }
+}
+
+// rhs = -R(p) = sum_m A_m(u_f(p)) - sum theta kappa (p - p_eq); returns max |rhs|.
+double IceComponent::pressure_residual(double dt) {
+  const Grid& g = setup_.grid;
+  sum_volume_flux_and_kappa(dt);
+  double max_rhs = 0;
+  for (std::size_t pi = 0; pi < g.patches.size(); ++pi)
+    for_each_cell_serial(g.patches[pi].cells(), [&](int i, int j, int k) {
+      const double r = delP_Dilatate_[pi](i, j, k) -
+                       sum_kappa_[pi](i, j, k) * (press_CC_[pi](i, j, k) - press_equil_CC_[pi](i, j, k));
+      rhs_[pi](i, j, k) = r;
+      max_rhs = std::max(max_rhs, std::abs(r));
+    });
+  return max_rhs;
+}
+
+void IceComponent::implicit_pressure_solve(double dt, int step) {
+  const Grid& g = setup_.grid;
+  const ImplicitSettings& im = setup_.implicit;
+  for (std::size_t pi = 0; pi < g.patches.size(); ++pi) press_CC_[pi] = press_equil_CC_[pi];
+  assemble_pressure_matrix(dt);
+  int it = 0;
+  double max_rhs = 0;
+  for (;; ++it) {
+    compute_face_velocities(dt, press_CC_);
+    add_exchange_to_face_velocities(dt);
+    max_rhs = pressure_residual(dt);
+    if (max_rhs < im.outer_iteration_tolerance) break;
+    if (it == im.max_outer_iterations) {
+      std::ostringstream os;
+      os << "ICE implicit pressure at step " << step << ": no convergence in " << im.max_outer_iterations
+         << " outer iterations (max |residual| = " << max_rhs << " > outer_iteration_tolerance = "
+         << im.outer_iteration_tolerance << ")";
+      throw NumericalFailure(os.str());
+    }
+    if (it >= im.iters_before_timestep_restart)
+      throw StepRestart{"more than iters_before_timestep_restart = " + std::to_string(im.iters_before_timestep_restart) +
+                        " outer iterations"};
+    const LinearSolveResult r = pressure_solver_->solve(stencil_, rhs_, delta_p_);
+    if (!r.converged) {
+      std::ostringstream os;
+      os << "the hypre " << im.hypre.solver << " solve stopped at relative residual " << r.relative_residual
+         << " after " << r.iterations << " iterations";
+      throw StepRestart{os.str()};
+    }
+    for (std::size_t pi = 0; pi < g.patches.size(); ++pi) {
+      for_each_cell(g.patches[pi].cells(), [&](int i, int j, int k) { press_CC_[pi](i, j, k) += delta_p_[pi](i, j, k); });
+      for (int face = 0; face < 6; ++face)
+        apply_scalar_bc(g, g.patches[pi], static_cast<GridFace>(face), setup_.bcs[0][face][kBcPressure], press_CC_[pi]);
+    }
+    halo_->exchange(press_CC_);
+  }
+  last_outer_iterations_ = it;
+  // delP_Dilatate = p - p_eq feeds the energy and specific-volume updates
+  // exactly as the explicit increment does.
+  for (std::size_t pi = 0; pi < g.patches.size(); ++pi)
+    for_each_cell(g.patches[pi].cells(), [&](int i, int j, int k) {
+      delP_Dilatate_[pi](i, j, k) = press_CC_[pi](i, j, k) - press_equil_CC_[pi](i, j, k);
+    });
+}
+
+}  // namespace tephra
