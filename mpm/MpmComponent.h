@@ -81,6 +81,7 @@ class MpmComponent final : public Component {
   void exchange_momentum(ContactStage stage, double t, double dt);
   void boundary_forces();
   void update_stress(MpmMaterial& m, int step, double dt);
+  void artificial_viscosity(MpmMaterial& m) const;
   [[noreturn]] void fail_particle(const MpmMaterial& m, std::size_t i, int step, const std::string& phase,
                                   const std::string& what) const;
   MpmSetup setup_;

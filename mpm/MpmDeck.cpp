@@ -106,6 +106,14 @@ std::unique_ptr<MpmComponent> make_mpm_component(const Deck& deck) {
   if ((setup.grid.periodic.array() != 0).any()) grid_node.missing_feature("MPM with periodic boundaries");
 
   setup.flags = parse_mpm_flags(root.child("MPM"));
+  // Vaango applies the <PhysicalBC><MPM> loads (pressure, force, ...) only
+  // with <use_load_curves>; none is implemented yet.
+  if (setup.flags.use_load_curves)
+    if (const DeckNode* bc = root.child("PhysicalBC"))
+      if (const DeckNode* mpm_bc = bc->child("MPM"))
+        if (!mpm_bc->children.empty())
+          mpm_bc->children.front().missing_feature("MPM physical boundary condition <" +
+                                                   mpm_bc->children.front().name + "> (load curves)");
   // GIMP, CPDI and B-spline supports reach past the particle's cell: a
   // particle near a domain face weights the node layer of the extra cells.
   if (setup.flags.interpolator.kind != InterpolatorKind::Linear && (setup.grid.extra_cells.array() < 1).any())
