@@ -60,6 +60,12 @@ MpmMaterial parse_material(const DeckNode& mat, int index, GeometryRegistry& geo
       m.thermal_conductivity = c.as_double();
     } else if (c.name == "specific_heat") {
       m.specific_heat = c.as_double();
+    } else if (c.name == "melt_temp" || c.name == "room_temp") {
+      // Vaango's MPMMaterial T_melt and T_room: read by models with melting or
+      // thermal terms; none of the implemented models uses them.
+      const double T = c.as_double();
+      if (!(T > 0.0)) c.fail(c.name + " must be > 0 K");
+      (c.name == "melt_temp" ? m.melt_temperature : m.room_temperature) = T;
     } else if (c.name == "geom_object") {
       m.sources.push_back(parse_geom_object(c, geometry));
     } else if (c.name == "is_rigid" || c.name == "includeFlowWork" || c.name == "do_basic_damage") {

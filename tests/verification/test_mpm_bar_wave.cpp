@@ -82,7 +82,7 @@ TEST(MpmBarWave, WaveSpeedAndStressBehindTheFront) {
   const double c_exact = std::sqrt((K + 4.0 * G / 3.0) / rho);
   const double sigma_exact = -rho * c_exact * v0;
 
-  const double t1 = 0.6e-3, t2 = 1.2e-3;
+  const double t1 = 0.3e-3, t2 = 0.7e-3;
   BarProfile p1, p2;
   double t = 0;
   int step = 0;
@@ -103,7 +103,9 @@ TEST(MpmBarWave, WaveSpeedAndStressBehindTheFront) {
               p2.mean_stress, sigma_exact, 100 * (p2.mean_stress / sigma_exact - 1), p2.min_stress,
               p2.min_stress / sigma_exact);
   EXPECT_NEAR(c_observed / c_exact, 1.0, 0.01);
-  EXPECT_NEAR(p1.front, -0.6 + c_exact * t1, 0.01 * c_exact * t1);
+  // The front starts within a cell of the struck face (GIMP spreads the
+  // face's velocity over the first cell): |offset| < h_x = 4 mm.
+  EXPECT_NEAR(p1.front, -0.6 + c_exact * t1, 0.004);
   EXPECT_NEAR(p2.mean_stress / sigma_exact, 1.0, 0.02);
 }
 

@@ -8,11 +8,13 @@
 // VT eq. 4.2) a uniaxial-stress history integrates d(sigma_zz) = E d(ln h)
 // exactly, so
 //   sigma_zz = E ln(h / h0),  E = 9 K G / (3 K + G) = 32 MPa,  sigma_xx = sigma_yy = 0,
-// up to (i) the time discretisation of the strain increments (a midpoint rule
-// on U: relative error O((dt eps_dot)^2), ~1e-12 here), (ii) the inertia of
-// the specimen: the load rate is 1 s^-1 against the specimen's wave transit
-// rate c/h ~ 2e4 s^-1, so the dynamic overshoot is ~ rho c v_piston ~ 2 kPa
-// (~0.1 % of the final 3.4 MPa; 0.5 % of E eps at the first output).
+// up to the time discretisation of the strain increments (a midpoint rule on
+// U: relative error O((dt eps_dot)^2) ~ (2e-5)^2 per step, observed 1e-10):
+// tolerance 1e-8. There is no inertia error: the one particle's velocity
+// gradient is set kinematically by the piston node (z = 0.01, v = -0.01 m/s)
+// and the symmetry plane (z = 0), l_zz = -0.01/0.01 = -1 s^-1 exactly, so
+// h = h0 exp(-t) (not h0 - 0.01 t: the piston drives the grid node, and the
+// specimen's top, inside the cell, follows the interpolated velocity).
 // h is the specimen height from the particle position: the particle sits at
 // the specimen's centre and its bottom on the z- plane, so h = 2 z_p.
 //
@@ -20,8 +22,9 @@
 // 50 % strain): the closed form is the uniaxial-stress CMR response: for
 // lambda = h/h0 find the lateral stretch a with sigma_xx(diag(a, a, lambda)) = 0
 // (bisection on the model's point function, VT eq. 4.12), then sigma_zz of
-// that F. Same tolerance origin (inertia; the hyperelastic stress has no time
-// discretisation error of its own).
+// that F. The hyperelastic stress has no integration error of its own; the
+// remaining error is the lateral stretch, set by the free lateral nodes
+// (observed 7e-8): tolerance 1e-6.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -70,7 +73,7 @@ TEST(MpmConstTest, HypoElasticUniaxialStressIsELogStretch) {
     ASSERT_EQ(p.size(), 1u);
     const double h = 2.0 * p.x[0][2];
     const double expected = E * std::log(h / h0);
-    if (t < 0.005) return;  // the first ~0.5 % of the run: |sigma| < 0.2 MPa, inertia dominated
+    if (t < 0.005) return;  // |E ln(h/h0)| < 0.16 MPa: relative errors of tiny stresses
     const double err = std::abs(p.stress[0](2, 2) - expected) / std::abs(expected);
     worst = std::max(worst, err);
     worst_lateral = std::max(worst_lateral, std::max(std::abs(p.stress[0](0, 0)), std::abs(p.stress[0](1, 1))) /
@@ -82,9 +85,11 @@ TEST(MpmConstTest, HypoElasticUniaxialStressIsELogStretch) {
               "max |sigma_lateral| / |sigma_zz| = %.3e, final h/h0 = %.5f\n",
               checks, worst, worst_lateral, last_h / h0);
   EXPECT_GT(checks, 20);
-  EXPECT_NEAR(last_h / h0, 0.9, 1e-3);  // the piston moved 0.01 m/s * 0.1 s
-  EXPECT_LT(worst, 5e-3);
-  EXPECT_LT(worst_lateral, 5e-3);
+  // l_zz = -1 s^-1 for 0.1 s; forward Euler in x_p gives prod(1 - dt_n), below
+  // exp(-t) by ~ t dt / 2 ~ 1e-6 (dt ~ 2e-5 s).
+  EXPECT_NEAR(last_h / h0, std::exp(-0.1), 1e-5);
+  EXPECT_LT(worst, 1e-8);
+  EXPECT_LT(worst_lateral, 1e-8);
 }
 
 // sigma_zz of CMR in uniaxial stress at axial stretch lambda (see the top).
@@ -117,7 +122,7 @@ TEST(MpmConstTest, CompMooneyRivlinUniaxialStressMatchesClosedForm) {
   run_deck("const_test_cmr.ups", 500, [&](double t, const Particles& p) {
     ASSERT_EQ(p.size(), 1u);
     const double h = 2.0 * p.x[0][2];
-    if (t < 0.025) return;  // inertia dominated start (as above)
+    if (t < 0.025) return;  // tiny stresses at the start (as above)
     const double expected = cmr_uniaxial_stress(h / h0, prm);
     worst = std::max(worst, std::abs(p.stress[0](2, 2) - expected) / std::abs(expected));
     last_h = h;
@@ -126,8 +131,8 @@ TEST(MpmConstTest, CompMooneyRivlinUniaxialStressMatchesClosedForm) {
   std::printf("const_test_cmr: %d checks, max relative error of sigma_zz = %.3e, final h/h0 = %.4f\n", checks,
               worst, last_h / h0);
   EXPECT_GT(checks, 20);
-  EXPECT_NEAR(last_h / h0, 0.5, 1e-3);
-  EXPECT_LT(worst, 5e-3);
+  EXPECT_NEAR(last_h / h0, std::exp(-0.5), 3e-5);  // as above: t dt / 2 ~ 1e-5 (dt ~ 4e-5 s)
+  EXPECT_LT(worst, 1e-6);
 }
 
 // The decks run to their end through the executable: exit 0, finite reductions.
