@@ -53,8 +53,8 @@ double sweep(const std::string& name, const std::string& deck_text, const std::s
         std::string("<timestep_multiplier>") + value + "</timestep_multiplier>");
     std::ofstream(dir / "deck.ups") << text;
     std::string out;
-    const int code = test::run_tephra((dir / "deck.ups").string() + " --quiet --output " + (dir / "out").string() +
-                                          " " + extra_args,
+    const int code = test::run_tephra((dir / "deck.ups").string() + " --quiet --threads 1 --output " +
+                                          (dir / "out").string() + " " + extra_args,
                                       &out);
     EXPECT_TRUE(code == 0 || code == 4) << name << " multiplier " << value << ": exit " << code << "\n" << out;
     if (code == 4) EXPECT_NE(out.find("MPM step"), std::string::npos) << out;  // names step and particle
