@@ -7,6 +7,10 @@
 
 #include "mpm/ArtificialViscosity.h"
 #include "mpm/DeformationGradient.h"
+#include "mpm/NodeGrid.h"
+#include "mpm/Particles.h"
+#include "mpm/Transfers.h"
+#include "mpm/shape/Interpolator.h"
 
 namespace tephra {
 namespace {
@@ -106,6 +110,37 @@ TEST(ArtificialViscosity, ClosedFormInCompressionZeroInExpansion) {
                    rho * (0.2 * c * 50.0 * h + 2.0 * (50.0 * h) * (50.0 * h)));
   EXPECT_EQ(artificial_bulk_viscosity(0.0, c, rho, h, a), 0.0);
   EXPECT_EQ(artificial_bulk_viscosity(+50.0, c, rho, h, a), 0.0);
+}
+
+// q enters the internal force as -q I added to the stress (Vaango's
+// computeInternalForce): particles with (sigma, q) give the same f_int as
+// particles with (sigma - q I, 0), bit for bit up to the one subtraction.
+TEST(ArtificialViscosity, EntersTheInternalForceAsMinusQIdentity) {
+  NodeGrid g;
+  g.origin = Vec3(0.0, 0.0, 0.0);
+  g.h = Vec3(0.1, 0.1, 0.1);
+  g.n = IntVec3(5, 5, 5);
+  g.reset();
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> u(0.05, 0.35);
+  Particles a, b;
+  for (int i = 0; i < 20; ++i) {
+    const Vec3 x(u(rng), u(rng), u(rng));
+    a.add(x, Vec3::Zero(), 1.0, 1e-3, 300.0, 0.0, i);
+    b.add(x, Vec3::Zero(), 1.0, 1e-3, 300.0, 0.0, i);
+    Mat3 sig;
+    for (int k = 0; k < 9; ++k) sig.data()[k] = u(rng) - 0.2;
+    a.stress.back() = sig;
+    a.q.back() = 0.5 * u(rng);
+    b.stress.back() = sig - a.q.back() * Mat3::Identity();
+  }
+  Stencils s;
+  ASSERT_EQ(compute_stencils(a, g, InterpolatorSpec{}, s), -1);
+  compute_internal_force(a, s, g);
+  const std::vector<Vec3> fa = g.internal_force;
+  g.reset();
+  compute_internal_force(b, s, g);
+  for (std::size_t n = 0; n < fa.size(); ++n) EXPECT_LT((fa[n] - g.internal_force[n]).norm(), 1e-15) << n;
 }
 
 }  // namespace
