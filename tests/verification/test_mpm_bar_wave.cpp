@@ -22,9 +22,12 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <fstream>
+#include <sstream>
 #include <cmath>
 #include <vector>
 
+#include "core/base/Errors.h"
 #include "core/deck/DeckLoader.h"
 #include "core/grid/Loop.h"
 #include "mpm/MpmComponent.h"
@@ -115,6 +118,25 @@ TEST(MpmBarWave, WaveSpeedAndStressBehindTheFront) {
   // face's velocity over the first cell): |offset| < h_x = 4 mm.
   EXPECT_NEAR(p1.front, -0.6 + c_exact * t1, 0.004);
   EXPECT_NEAR(p2.mean_stress / sigma_exact, 1.0, 0.02);
+}
+
+// <use_load_curves>true is accepted above because the deck has no
+// <PhysicalBC><MPM> load; with one (not implemented) the deck exits 3.
+TEST(MpmBarWave, LoadCurveWithAPhysicalBcIsAMissingFeature) {
+  const std::string path = test::shared_dir() +
+                           "/decks/inputs/MPM/WavePropagationVerification/MPM1DVerificationTests/"
+                           "OneD_velocityBC_gimp_damped_uintah.ups";
+  std::ifstream in(path);
+  std::stringstream text;
+  text << in.rdbuf();
+  std::string deck_text = text.str();
+  const std::string close = "</Uintah_specification>";
+  deck_text.insert(deck_text.rfind(close),
+                   "<PhysicalBC><MPM><pressure><geom_object><box label=\"end\"><min>[-0.61,-1,-1]</min>"
+                   "<max>[-0.59,1,1]</max></box></geom_object><load_curve><id>1</id><time_point><time>0</time>"
+                   "<load>1</load></time_point></load_curve></pressure></MPM></PhysicalBC>\n");
+  auto deck = load_deck_from_string(deck_text, "bar_with_load.ups", ".");
+  EXPECT_THROW(make_mpm_component(*deck), MissingFeature);
 }
 
 }  // namespace
