@@ -9,6 +9,8 @@
 
 #include "core/base/Errors.h"
 #include "core/base/PhaseTimers.h"
+#include "mpm/ArtificialViscosity.h"
+#include "mpm/DeformationGradient.h"
 #include "mpm/Transfers.h"
 #include "mpm/contact/ContactNormals.h"
 
@@ -129,6 +131,26 @@ void MpmComponent::update_stress(MpmMaterial& m, int step, double dt) {
   if (bad >= 0) fail_particle(m, std::size_t(bad), step, "compute stress tensor",
                               "constitutive model '" + m.model->type() +
                                   "' rejected the state (non-finite stress or no real wave speed)");
+  if (setup_.flags.artificial_viscosity) artificial_viscosity(m);
+}
+
+// q_p from this step's l_p and the current density (mpm/ArtificialViscosity.h),
+// for the internal force of the next step; with <artificial_viscosity_heating>
+// also the heating rate -q tr D / (rho c_v) (Vaango's Tdot_AV).
+void MpmComponent::artificial_viscosity(MpmMaterial& m) const {
+  Particles& p = m.particles;
+  const Vec3& dx = setup_.grid.dx;
+  const double h = (dx[0] + dx[1] + dx[2]) / 3.0;
+  const ArtificialViscosityCoefficients a{setup_.flags.artificial_viscosity_coeff1,
+                                          setup_.flags.artificial_viscosity_coeff2};
+  const double K = m.model->bulk_modulus();
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const double rho = p.mass[i] / p.volume[i];
+    const double trace_D = m.L[i].trace();
+    p.q[i] = artificial_bulk_viscosity(trace_D, std::sqrt(K / rho), rho, h, a);
+    if (setup_.flags.artificial_viscosity_heating && m.specific_heat > 0.0)
+      m.heating[i] += -p.q[i] * trace_D / (rho * m.specific_heat);
+  }
 }
 
 // Contact on v_g (interpolated) or v*_g (integrated) of all materials (§1.7).
@@ -265,7 +287,10 @@ void MpmComponent::advance(double t, double dt, int step) {
       velocity_gradients(m.stencils, m.grid, m.L);
       Particles& p = m.particles;
       m.F_old = p.F;
-      for (std::size_t i = 0; i < p.size(); ++i) p.F[i] = (Mat3::Identity() + dt * m.L[i]) * p.F[i];
+      // <deformation_gradient algorithm>: first_order is eq. 1.75; the series
+      // approximate exp(dt l) (mpm/DeformationGradient.h).
+      update_deformation_gradients(deformation_gradient_algorithm(setup_.flags.deformation_gradient),
+                                   setup_.flags.deformation_gradient_terms, dt, m.L, p.F);
       if (m.model->rigid()) std::fill(p.F.begin(), p.F.end(), Mat3::Identity());
     }
   }

@@ -29,7 +29,9 @@ struct MpmMaterial {
   int index = 0;                        // material index (order in the deck)
   double density = 0.0;                 // rho0 [kg/m^3]
   double thermal_conductivity = 0.0;    // read, unused (no heat conduction yet)
-  double specific_heat = 0.0;           // read, unused
+  double specific_heat = 0.0;           // c_v [J/(kg K)] (artificial-viscosity heating)
+  double melt_temperature = 0.0;        // <melt_temp> [K], 0 if absent; read, unused by the implemented models
+  double room_temperature = 0.0;        // <room_temp> [K], 0 if absent; read, unused
   ConstitutiveModelP model;
   std::vector<ParticleSource> sources;  // geom_objects, seeded by initialize()
   GridBoundaryConditions bcs;
@@ -81,6 +83,7 @@ class MpmComponent final : public Component {
   void exchange_momentum(ContactStage stage, double t, double dt);
   void boundary_forces();
   void update_stress(MpmMaterial& m, int step, double dt);
+  void artificial_viscosity(MpmMaterial& m) const;
   [[noreturn]] void fail_particle(const MpmMaterial& m, std::size_t i, int step, const std::string& phase,
                                   const std::string& what) const;
   MpmSetup setup_;

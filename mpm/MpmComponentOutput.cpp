@@ -9,7 +9,7 @@ namespace {
 
 const char* const kParticleLabels[] = {"p.x", "p.particleID", "p.volume", "p.velocity", "p.stress",
                                        "p.mass", "p.deformationMeasure", "p.displacement",
-                                       "p.temperature", "p.color", "p.externalforce", "p.size"};
+                                       "p.temperature", "p.color", "p.externalforce", "p.size", "p.q"};
 const char* const kNodeLabels[] = {"g.mass", "g.volume", "g.velocity", "g.velocity_star", "g.acceleration",
                                    "g.externalforce", "g.internalforce", "g.stressFS"};
 const char* const kReductionLabels[] = {"KineticEnergy", "StrainEnergy", "TotalMass", "TotalMomentum",
@@ -75,6 +75,7 @@ void for_each_column(P& p, G& g, Fn&& fn) {
   fn("color", p.color);
   fn("wave_speed", p.wave_speed);
   fn("energy_density", p.energy_density);
+  fn("q", p.q);
   fn("g.mass", g.mass);
   fn("g.volume", g.volume);
   fn("g.velocity", g.velocity);
@@ -127,6 +128,7 @@ void MpmComponent::fill_output(const std::set<std::string>& labels, OutputFrame&
     if (want("p.color")) b.fields.push_back(field("p.color", m.index, p.color));
     if (want("p.externalforce")) b.fields.push_back(field("p.externalforce", m.index, p.external_force));
     if (want("p.size")) b.fields.push_back(field("p.size", m.index, p.psize));
+    if (want("p.q")) b.fields.push_back(field("p.q", m.index, p.q));
     // The model's history columns, p.<name>, as declared (already flat).
     const std::vector<HistoryVariable> hist = m.model->history();
     for (std::size_t k = 0; k < hist.size(); ++k) {

@@ -60,6 +60,12 @@ MpmMaterial parse_material(const DeckNode& mat, int index, GeometryRegistry& geo
       m.thermal_conductivity = c.as_double();
     } else if (c.name == "specific_heat") {
       m.specific_heat = c.as_double();
+    } else if (c.name == "melt_temp" || c.name == "room_temp") {
+      // Vaango's MPMMaterial T_melt and T_room: read by models with melting or
+      // thermal terms; none of the implemented models uses them.
+      const double T = c.as_double();
+      if (!(T > 0.0)) c.fail(c.name + " must be > 0 K");
+      (c.name == "melt_temp" ? m.melt_temperature : m.room_temperature) = T;
     } else if (c.name == "geom_object") {
       m.sources.push_back(parse_geom_object(c, geometry));
     } else if (c.name == "is_rigid" || c.name == "includeFlowWork" || c.name == "do_basic_damage") {
@@ -106,6 +112,14 @@ std::unique_ptr<MpmComponent> make_mpm_component(const Deck& deck) {
   if ((setup.grid.periodic.array() != 0).any()) grid_node.missing_feature("MPM with periodic boundaries");
 
   setup.flags = parse_mpm_flags(root.child("MPM"));
+  // Vaango applies the <PhysicalBC><MPM> loads (pressure, force, ...) only
+  // with <use_load_curves>; none is implemented yet.
+  if (setup.flags.use_load_curves)
+    if (const DeckNode* bc = root.child("PhysicalBC"))
+      if (const DeckNode* mpm_bc = bc->child("MPM"))
+        if (!mpm_bc->children.empty())
+          mpm_bc->children.front().missing_feature("MPM physical boundary condition <" +
+                                                   mpm_bc->children.front().name + "> (load curves)");
   // GIMP, CPDI and B-spline supports reach past the particle's cell: a
   // particle near a domain face weights the node layer of the extra cells.
   if (setup.flags.interpolator.kind != InterpolatorKind::Linear && (setup.grid.extra_cells.array() < 1).any())

@@ -19,7 +19,7 @@ const char* const kNoEffect[] = {
     "DoExplicitHeatConduction", "do_explicit_heat_conduction", "DoTransientImplicitHeatConduction", "DoThermalExpansion",
     "do_contact_friction_heating", "interpolateParticleTempToGridEveryStep", "testForNegTemps_mpm",
     "minimum_particle_mass", "maximum_particle_velocity", "min_grid_level", "max_grid_level",
-    "artificial_viscosity_coeff1", "artificial_viscosity_coeff2", "CanAddMPMMaterial",
+    "CanAddMPMMaterial",
 };
 
 // Flags that change the physics, with Vaango's default (MPMFlags). Accepted
@@ -29,9 +29,6 @@ const std::map<std::string, std::string>& physics_defaults() {
       {"time_integrator", "explicit"},
       {"axisymmetric", "false"},
       {"artificial_damping_coeff", "0"},
-      {"artificial_viscosity", "false"},
-      {"artificial_viscosity_heating", "false"},
-      {"use_load_curves", "false"},
       {"exactDeformation", "false"},
       {"create_new_particles", "false"},
       {"manual_new_material", "false"},
@@ -122,11 +119,35 @@ MpmFlags parse_mpm_flags(const DeckNode* mpm) {
       if (c.text != "none") flags.mms = c.text;
       continue;
     }
-    if (c.name == "erosion" || c.name == "deformation_gradient") {
-      // <erosion algorithm="none"/>, <deformation_gradient algorithm="first_order"/>
-      const std::string def = c.name == "erosion" ? "none" : "first_order";
-      const std::string alg = c.attribute("algorithm").value_or(def);
-      if (alg != def) c.missing_feature("MPM " + c.name + " algorithm '" + alg + "'");
+    if (c.name == "artificial_viscosity") { flags.artificial_viscosity = c.as_bool(); continue; }
+    if (c.name == "artificial_viscosity_heating") { flags.artificial_viscosity_heating = c.as_bool(); continue; }
+    if (c.name == "use_load_curves") { flags.use_load_curves = c.as_bool(); continue; }
+    if (c.name == "artificial_viscosity_coeff1" || c.name == "artificial_viscosity_coeff2") {
+      const double a = c.as_double();
+      if (!(a >= 0.0)) c.fail(c.name + " must be >= 0");
+      (c.name == "artificial_viscosity_coeff1" ? flags.artificial_viscosity_coeff1
+                                               : flags.artificial_viscosity_coeff2) = a;
+      continue;
+    }
+    if (c.name == "erosion") {
+      // <erosion algorithm="none"/>
+      const std::string alg = c.attribute("algorithm").value_or("none");
+      if (alg != "none") c.missing_feature("MPM erosion algorithm '" + alg + "'");
+      continue;
+    }
+    if (c.name == "deformation_gradient") {
+      // <deformation_gradient algorithm="taylor_series"> <num_terms>5</num_terms> </deformation_gradient>
+      const std::string alg = c.attribute("algorithm").value_or("first_order");
+      if (alg != "first_order" && alg != "subcycling" && alg != "taylor_series" && alg != "cayley_hamilton")
+        c.fail("deformation_gradient algorithm must be first_order, subcycling, taylor_series or cayley_hamilton, not '" +
+               alg + "'");
+      flags.deformation_gradient = alg;
+      for (const DeckNode& t : c.children) {
+        if (t.name != "num_terms") t.fail("unknown element <" + t.name + "> in <deformation_gradient> (known: num_terms)");
+        flags.deformation_gradient_terms = t.as_int();
+        if (flags.deformation_gradient_terms < 1 || flags.deformation_gradient_terms > 20)
+          t.fail("num_terms must be in [1, 20]");
+      }
       continue;
     }
     auto it = physics_defaults().find(c.name);

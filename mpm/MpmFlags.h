@@ -21,6 +21,26 @@ struct MpmFlags {
   // (0 x-, 1 x+, 2 y-, 3 y+, 4 z-, 5 z+) whose BndyForce_<face> and
   // BndyContactArea_<face> reductions are computed.
   std::vector<int> boundary_traction_faces;
+  // <artificial_viscosity>: Vaango's artificial bulk viscosity (MPMFlags
+  // d_artificial_viscosity, ConstitutiveModel::artificialBulkViscosity),
+  //   q = rho (A1 c_b |tr D| h + A2 (tr D h)^2)   for tr D < 0, else 0,
+  // c_b = sqrt(K/rho), h the mean cell size; -q I is added to the stress in
+  // the internal force only (SerialMPM computeInternalForce). Defaults
+  // A1 = 0.2, A2 = 2.0 (<artificial_viscosity_coeff1/2>).
+  bool artificial_viscosity = false;
+  double artificial_viscosity_coeff1 = 0.2;
+  double artificial_viscosity_coeff2 = 2.0;
+  // <artificial_viscosity_heating>: adds -q tr D / (rho c_v) to the particle
+  // heating rate dT/dt (Vaango's include_AV_heating).
+  bool artificial_viscosity_heating = false;
+  // <use_load_curves>: accepted; loads (<PhysicalBC>) are checked in MpmDeck.
+  bool use_load_curves = false;
+  // <deformation_gradient algorithm=...>: how F_{n+1} follows from l and F_n
+  // (Vaango DeformationGradientComputer): first_order F = (I + dt l) F_n;
+  // subcycling, taylor_series, cayley_hamilton with <num_terms> (Vaango's
+  // default 1). See mpm/DeformationGradient.h.
+  std::string deformation_gradient = "first_order";
+  int deformation_gradient_terms = 1;
 };
 
 // Reads <MPM> (may be null: all defaults).

@@ -25,6 +25,8 @@ struct Particles {
   std::vector<double> color;       // geom_object <color>, 0 if absent  (p.color)
   std::vector<double> wave_speed;  // dilatational wave speed [m/s] of the last stress update
   std::vector<double> energy_density; // stored energy per reference volume W(F) [J/m^3]
+  std::vector<double> q;           // artificial bulk viscosity [Pa] of the last stress update
+                                   // (0 without <artificial_viscosity>; mpm/ArtificialViscosity.h) (p.q)
   std::vector<long long> id;       // unique, stable                    (p.particleID)
   // The internal variables the material's model declares
   // (ConstitutiveModel::history(), same order): history[k] holds
@@ -51,6 +53,7 @@ struct Particles {
     color.push_back(col);
     wave_speed.push_back(0.0);
     energy_density.push_back(0.0);
+    q.push_back(0.0);
     id.push_back(pid);
   }
 };

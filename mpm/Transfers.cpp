@@ -119,7 +119,8 @@ void fint_range(const Particles& p, const Stencils& s, std::size_t begin, std::s
   const std::size_t* node = s.node.data();
   const Vec3* grad = s.grad.data();
   for (std::size_t i = begin; i < end; ++i) {
-    const Mat3 vol_stress = p.volume[i] * p.stress[i];
+    // sigma - q I: the artificial bulk viscosity acts in the force only.
+    const Mat3 vol_stress = p.volume[i] * (p.stress[i] - p.q[i] * Mat3::Identity());
     for (std::size_t k = i * W; k < (i + 1) * W; ++k) fint[node[k]] -= vol_stress * grad[k];
   }
 }

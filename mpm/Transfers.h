@@ -19,7 +19,8 @@ namespace tephra {
 void particles_to_grid(const Particles& p, const Stencils& s, const Vec3& body_force,
                        NodeGrid& g);
 
-// f_int,g = - sum V_p sigma_p grad S_gp   (Alg. 6, eq. 1.70; sigma, V at t_n).
+// f_int,g = - sum V_p (sigma_p - q_p I) grad S_gp   (Alg. 6, eq. 1.70; sigma, V at t_n;
+// q_p the artificial bulk viscosity, 0 unless <artificial_viscosity>).
 void compute_internal_force(const Particles& p, const Stencils& s, NodeGrid& g);
 
 // a_g = (f_int,g + f_ext,g) / m_g,  v*_g = v_g + a_g dt   (Alg. 7, eqs. 1.71-1.72).

@@ -74,3 +74,42 @@ TEST(MpmDeckParsing, BoundaryConditions) {
 
 }  // namespace
 }  // namespace tephra
+
+namespace tephra {
+namespace {
+
+// <artificial_viscosity> and its coefficients (Vaango defaults 0.2, 2.0),
+// <deformation_gradient algorithm> with <num_terms> (Vaango default 1).
+TEST(MpmDeckParsing, ArtificialViscosityAndDeformationGradientFlags) {
+  auto flags = [](const std::string& body) {
+    auto d = load_deck_from_string("<Uintah_specification><MPM>" + body + "</MPM></Uintah_specification>", "t.ups", ".");
+    return parse_mpm_flags(d->root.child("MPM"));
+  };
+  const MpmFlags none = flags("");
+  EXPECT_FALSE(none.artificial_viscosity);
+  EXPECT_EQ(none.artificial_viscosity_coeff1, 0.2);
+  EXPECT_EQ(none.artificial_viscosity_coeff2, 2.0);
+  EXPECT_EQ(none.deformation_gradient, "first_order");
+  EXPECT_EQ(none.deformation_gradient_terms, 1);
+  const MpmFlags av = flags("<artificial_viscosity>true</artificial_viscosity><artificial_viscosity_heating>true"
+                            "</artificial_viscosity_heating><artificial_viscosity_coeff1>0.3</artificial_viscosity_coeff1>"
+                            "<artificial_viscosity_coeff2>1.5</artificial_viscosity_coeff2>");
+  EXPECT_TRUE(av.artificial_viscosity);
+  EXPECT_TRUE(av.artificial_viscosity_heating);
+  EXPECT_EQ(av.artificial_viscosity_coeff1, 0.3);
+  EXPECT_EQ(av.artificial_viscosity_coeff2, 1.5);
+  EXPECT_THROW(flags("<artificial_viscosity_coeff1>-1</artificial_viscosity_coeff1>"), DeckError);
+  const MpmFlags ts = flags("<deformation_gradient algorithm=\"taylor_series\"><num_terms>5</num_terms></deformation_gradient>");
+  EXPECT_EQ(ts.deformation_gradient, "taylor_series");
+  EXPECT_EQ(ts.deformation_gradient_terms, 5);
+  EXPECT_EQ(flags("<deformation_gradient algorithm=\"subcycling\"/>").deformation_gradient, "subcycling");
+  EXPECT_THROW(flags("<deformation_gradient algorithm=\"exact\"/>"), DeckError);
+  EXPECT_THROW(flags("<deformation_gradient algorithm=\"taylor_series\"><num_terms>0</num_terms></deformation_gradient>"),
+               DeckError);
+  EXPECT_THROW(flags("<deformation_gradient algorithm=\"taylor_series\"><terms>3</terms></deformation_gradient>"),
+               DeckError);
+  EXPECT_TRUE(flags("<use_load_curves>true</use_load_curves>").use_load_curves);
+}
+
+}  // namespace
+}  // namespace tephra
