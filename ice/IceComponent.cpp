@@ -47,6 +47,7 @@ void IceComponent::initialize() {
   mass_L_.assign(nm, CellScalars(g, kGhosts));
   temp_L_.assign(nm, CellScalars(g, kGhosts));
   spv_L_.assign(nm, CellScalars(g, kGhosts));
+  cv_CC_.assign(nm, CellScalars(g, kGhosts));
   vel_L_.assign(nm, CellVectors(g, kGhosts));
   flux_ = FaceScalars(g, 0);
   flux2_ = FaceScalars(g, 0);

@@ -75,7 +75,7 @@ class IceComponent final : public Component {
   FaceScalars press_FC_;
   // Lagrangian quantities of the step, per material (scratch): mass, and the
   // specific quantities advected with it (velocity, temperature, specific volume).
-  std::vector<CellScalars> mass_L_, temp_L_, spv_L_;
+  std::vector<CellScalars> mass_L_, temp_L_, spv_L_, cv_CC_;  // cv_CC_: c_v per cell for the step
   std::vector<CellVectors> vel_L_;
   FaceScalars flux_, flux2_;
   FaceData<Vec3> flux_v_;

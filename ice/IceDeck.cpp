@@ -1,6 +1,7 @@
 // make_ice_component: the ICE parts of a deck -> an IceComponent.
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <set>
 
 #include "core/base/Log.h"
@@ -81,12 +82,64 @@ IceSource parse_source(const DeckNode& go, GeometryRegistry& geometry) {
   return s;
 }
 
+// <SpecificHeatModel type="Polynomial|Debye|Component"> (ups_spec/ice_spec.xml;
+// parameters and defaults as Uintah's ICE SpecificHeatModel constructors).
+IceSpecificHeatP parse_specific_heat(const DeckNode& n) {
+  const std::string type = n.require_attribute("type");
+  if (type == "Polynomial") {
+    const int order = n.require_child("MaxOrder").as_int();
+    if (order < 0) n.require_child("MaxOrder").fail("MaxOrder must be >= 0");
+    const std::vector<double> a = n.require_child("coefficient").as_doubles();
+    if (a.size() != static_cast<std::size_t>(order) + 1)
+      n.require_child("coefficient").fail("Polynomial <coefficient> needs MaxOrder + 1 = " + std::to_string(order + 1) +
+                                          " values, has " + std::to_string(a.size()));
+    const double Tmin = n.child("Tmin") ? n.child("Tmin")->as_double() : 0.0;
+    const double Tmax = n.child("Tmax") ? n.child("Tmax")->as_double() : 1.0e6;
+    if (!(Tmin < Tmax)) n.fail("Polynomial specific heat needs Tmin < Tmax");
+    for (const DeckNode& c : n.children)
+      if (c.name != "MaxOrder" && c.name != "coefficient" && c.name != "Tmin" && c.name != "Tmax")
+        c.fail("SpecificHeatModel Polynomial has no parameter <" + c.name + ">");
+    return make_polynomial_cv(order, a, Tmin, Tmax);
+  }
+  if (type == "Debye") {
+    const int atoms = n.require_child("Atoms").as_int();
+    const double TD = n.require_child("DebyeTemperature").as_double();
+    if (atoms <= 0) n.require_child("Atoms").fail("Atoms must be > 0");
+    if (!(TD > 0)) n.require_child("DebyeTemperature").fail("DebyeTemperature must be > 0");
+    for (const DeckNode& c : n.children)
+      if (c.name != "Atoms" && c.name != "DebyeTemperature") c.fail("SpecificHeatModel Debye has no parameter <" + c.name + ">");
+    return make_debye_cv(atoms, TD);
+  }
+  if (type == "Component") {
+    const auto& names = component_cv_species();
+    std::vector<double> X(names.size(), 0.0);
+    double sum = 0;
+    for (const DeckNode& c : n.children) {
+      const auto it = std::find(names.begin(), names.end(), c.name);
+      if (it == names.end()) c.fail("SpecificHeatModel Component has no parameter <" + c.name + ">");
+      const double x = c.as_double();
+      if (x < 0) c.fail("mole fraction must be >= 0");
+      X[static_cast<std::size_t>(it - names.begin())] = x;
+      sum += x;
+    }
+    // Uintah: the fractions must add to 1 within 1e-12.
+    if (std::abs(sum - 1.0) > 1e-12) n.fail("Component mole fractions add to " + std::to_string(sum) + ", not 1");
+    return make_component_cv(X);
+  }
+  n.fail("unknown SpecificHeatModel type '" + type + "' (Debye, Component, Polynomial)");
+}
+
 IceMaterialSpec parse_material(const DeckNode& mat, int index, GeometryRegistry& geometry) {
   IceMaterialSpec m;
   m.index = index;
   m.name = mat.attribute("name").value_or("");
   m.gamma = positive(mat, "gamma");
   m.cv = positive(mat, "specific_heat");
+  if (const DeckNode* shm = mat.child("SpecificHeatModel")) {
+    m.cv_model = parse_specific_heat(*shm);
+    // Component defines gamma (mole-fraction mix, constant in T); it replaces <gamma> (Uintah getGamma).
+    if (auto gm = m.cv_model->gamma()) m.gamma = *gm;
+  }
   m.dynamic_viscosity = mat.require_child("dynamic_viscosity").as_double();
   m.thermal_conductivity = mat.require_child("thermal_conductivity").as_double();
   if (m.dynamic_viscosity < 0) mat.require_child("dynamic_viscosity").fail("dynamic_viscosity must be >= 0");
@@ -116,7 +169,7 @@ IceMaterialSpec parse_material(const DeckNode& mat, int index, GeometryRegistry&
       m.sources.push_back(parse_source(c, geometry));
     } else if (c.name == "tiny_rho") {
       m.tiny_rho = positive(mat, "tiny_rho");
-    } else if (c.name == "gamma" || c.name == "specific_heat" || c.name == "dynamic_viscosity" ||
+    } else if (c.name == "SpecificHeatModel" || c.name == "gamma" || c.name == "specific_heat" || c.name == "dynamic_viscosity" ||
                c.name == "thermal_conductivity") {
     } else if (c.name == "isSurroundingMatl" || c.name == "includeFlowWork") {
       if (c.as_bool()) c.missing_feature("ICE material <" + c.name + "> = true");

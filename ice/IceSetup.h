@@ -2,6 +2,7 @@
 // What the ICE component reads from a deck (make_ice_component): materials
 // with their EOS and initial geometry, the <CFD> settings, physical constants,
 // exchange coefficients and boundary conditions, all checked before step 1.
+#include "models/thermo/IceSpecificHeat.h"
 #include <string>
 #include <vector>
 
@@ -29,6 +30,7 @@ struct IceMaterialSpec {
   std::string eos_type;
   EquationOfStateP eos;
   double gamma = 0, cv = 0;  // <gamma>, <specific_heat>
+  IceSpecificHeatP cv_model; // <SpecificHeatModel>: c_v(T) per cell replaces cv in the energy equation
   double dynamic_viscosity = 0, thermal_conductivity = 0;  // mu [Pa s], k [W/(m K)] (ice/Diffusion.h)
   double tiny_rho = 1e-12;   // <tiny_rho>: rho_CC = tiny_rho * rho_micro where a material is absent
   std::vector<IceSource> sources;

@@ -226,9 +226,13 @@ void IceComponent::lagrangian_values_and_exchange(double dt) {
     // Momentum and energy sources, Lagrangian values.
     for (std::size_t m = 0; m < nm; ++m) {
       IceMaterialFields& f = mats_[m];
-      const double cv = setup_.materials[m].cv;
+      // c_v per cell: the constant <specific_heat>, or <SpecificHeatModel> c_v(T^n)
+      // at the start of the step (Uintah evaluates cv from temp_CC and keeps it for the step).
+      const IceSpecificHeat* cv_model = setup_.materials[m].cv_model.get();
+      const double cv_const = setup_.materials[m].cv;
       for_each_cell(patch.cells_with_extra(), [&](int i, int j, int k) {
         mass_L_[m][pi](i, j, k) = f.rho_CC[pi](i, j, k) * V;
+        cv_CC_[m][pi](i, j, k) = cv_model ? cv_model->cv(f.temp_CC[pi](i, j, k)) : cv_const;
       });
       compute_diffusion_sources(m, pi);
       for_each_cell(patch.cells(), [&](int i, int j, int k) {
@@ -246,6 +250,7 @@ void IceComponent::lagrangian_values_and_exchange(double dt) {
         const Vec3 mom_L = mass * f.vel_CC[pi](c) + source;
         const double ss = f.speedSound_CC[pi](c);
         const double kappa = f.sp_vol_CC[pi](c) / (ss * ss);
+        const double cv = cv_CC_[m][pi](c);
         const double eint_L = mass * cv * f.temp_CC[pi](c) +
                               V * theta * kappa * press_CC_[pi](c) * delP_Dilatate_[pi](c) + dt * V * heat_[pi](c);
         vel_L_[m][pi](c) = mom_L / mass;
@@ -254,10 +259,10 @@ void IceComponent::lagrangian_values_and_exchange(double dt) {
     }
     // Momentum and heat exchange, cell by cell.
     if (nm > 1) {
-      std::vector<double> inv_cv(nm);
-      for (std::size_t m = 0; m < nm; ++m) inv_cv[m] = 1.0 / setup_.materials[m].cv;
       for_each_cell(patch.cells(), [&](int i, int j, int k) {
         const IntVec3 c(i, j, k);
+        double inv_cv[kMaxExchangeMaterials];
+        for (std::size_t m = 0; m < nm; ++m) inv_cv[m] = 1.0 / cv_CC_[m][pi](c);
         double theta[kMaxExchangeMaterials], sv[kMaxExchangeMaterials], ux[kMaxExchangeMaterials],
             uy[kMaxExchangeMaterials], uz[kMaxExchangeMaterials], T[kMaxExchangeMaterials];
         for (std::size_t m = 0; m < nm; ++m) {
@@ -270,7 +275,7 @@ void IceComponent::lagrangian_values_and_exchange(double dt) {
           T[m] = temp_L_[m][pi](c);
         }
         solve_exchange3(dt, {theta, nm}, {sv, nm}, setup_.K, {ux, nm}, {uy, nm}, {uz, nm});
-        solve_exchange(dt, {theta, nm}, {sv, nm}, inv_cv, setup_.H, {T, nm});
+        solve_exchange(dt, {theta, nm}, {sv, nm}, {inv_cv, nm}, setup_.H, {T, nm});
         for (std::size_t m = 0; m < nm; ++m) {
           vel_L_[m][pi](c) = Vec3(ux[m], uy[m], uz[m]);
           temp_L_[m][pi](c) = T[m];
@@ -313,7 +318,6 @@ void IceComponent::lagrangian_values_and_exchange(double dt) {
   // Boundary values of the Lagrangian state; output copies.
   for (std::size_t m = 0; m < nm; ++m) {
     IceMaterialFields& f = mats_[m];
-    const double cv = setup_.materials[m].cv;
     for (std::size_t pi = 0; pi < g.patches.size(); ++pi) {
       const Patch& p = g.patches[pi];
       for (int face = 0; face < 6; ++face) {
@@ -332,7 +336,7 @@ void IceComponent::lagrangian_values_and_exchange(double dt) {
       for_each_cell(p.cells_with_extra(), [&](int i, int j, int k) {
         const double mass = mass_L_[m][pi](i, j, k);
         f.mom_L_ME_CC[pi](i, j, k) = mass * vel_L_[m][pi](i, j, k);
-        f.eng_L_ME_CC[pi](i, j, k) = mass * cv * temp_L_[m][pi](i, j, k);
+        f.eng_L_ME_CC[pi](i, j, k) = mass * cv_CC_[m][pi](i, j, k) * temp_L_[m][pi](i, j, k);
       });
     }
     halo_->exchange(mass_L_[m]);

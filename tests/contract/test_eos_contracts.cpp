@@ -258,19 +258,6 @@ TEST(EosContracts, EveryEosDataIncludeParses) {
       }
     }
     SCOPED_TRACE(name);
-    if (xml.find("<SpecificHeatModel") != std::string::npos) {
-      // Temperature-dependent c_v (Polynomial) is not implemented in ICE yet:
-      // the deck must stop with MissingFeature naming <SpecificHeatModel>.
-      auto d = load_deck_from_string(text, name, (fs::path(test::shared_dir()) / "decks/inputs/ICE").string());
-      try {
-        make_ice_component(*d);
-        ADD_FAILURE() << "expected MissingFeature";
-      } catch (const MissingFeature& e) {
-        EXPECT_NE(std::string(e.what()).find("SpecificHeatModel"), std::string::npos);
-      }
-      ++n;
-      continue;
-    }
     try {
       auto d = load_deck_from_string(text, name, (fs::path(test::shared_dir()) / "decks/inputs/ICE").string());
       auto ice = make_ice_component(*d);
