@@ -142,8 +142,8 @@ TEST(ElasticPlasticHP, JohnsonCookAdiabaticMatchesOfflineIntegration) {
     std::printf("n %d: ep %.6f  T %.5f (offline %.5f)  q %.6e (JC %.6e)\n", n, r.ep, r.T, T_off, r.q,
                 jc(r.ep, kRate, T_off));
     EXPECT_GT(r.T - kT0, 5.0);  // the heating is real: ~ chi int sigma d ep/(rho cp) ~ 10 K
-    EXPECT_NEAR(r.q / jc(r.ep, kRate, T_off), 1.0, 2e-4);
-    EXPECT_LT(err_T, 0.02);
+    EXPECT_NEAR(r.q / jc(r.ep, kRate, T_off), 1.0, 5e-5);  // observed 1.4e-5, 2.0e-5
+    EXPECT_LT(err_T, 0.01);  // observed 5.0e-3 K (n 1000), 2.0e-3 K (n 2000)
     if (prev_err > 0) EXPECT_LT(err_T, 0.6 * prev_err);  // first order in dt: halves
     prev_err = err_T;
   }
