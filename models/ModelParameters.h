@@ -20,6 +20,18 @@ class ModelParameters {
   [[noreturn]] virtual void fail(const std::string& name, const std::string& message) const = 0;
   // Valid input that asks for something not implemented (MissingFeature).
   [[noreturn]] virtual void missing_feature(const std::string& name, const std::string& what) const = 0;
+
+  // ---- nested sub-model blocks (composed models such as elastic_plastic_hp):
+  // a child element <name type="key"> whose own children are its parameters.
+  // The block, or nullptr when absent; owned by (and living as long as) this
+  // object; marks `name` as used. Implementations without blocks return nullptr.
+  virtual const ModelParameters* block(const std::string& /*name*/) const { return nullptr; }
+  // This element's `type` attribute ("" when it has none): a block's sub-model key.
+  virtual std::string type_attribute() const { return {}; }
+  // A value of the ENCLOSING element (the <material> around <constitutive_model>:
+  // melt_temp, specific_heat, ...), which Vaango hands to sub-models as defaults;
+  // `fallback` when absent or when there is no enclosing element.
+  virtual double enclosing_double(const std::string& /*name*/, double fallback) const { return fallback; }
 };
 
 }  // namespace tephra

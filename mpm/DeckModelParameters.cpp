@@ -35,7 +35,23 @@ void DeckModelParameters::missing_feature(const std::string& name, const std::st
   at(name).missing_feature(what);
 }
 
+const ModelParameters* DeckModelParameters::block(const std::string& name) const {
+  used_.insert(name);
+  auto it = blocks_.find(name);
+  if (it != blocks_.end()) return it->second.get();
+  const DeckNode* c = node_.child(name);
+  if (!c) return nullptr;
+  return blocks_.emplace(name, std::make_unique<DeckModelParameters>(*c)).first->second.get();
+}
+
+std::string DeckModelParameters::type_attribute() const { return node_.attribute("type").value_or(""); }
+
+double DeckModelParameters::enclosing_double(const std::string& name, double fallback) const {
+  return node_.parent ? node_.parent->get_double(name, fallback) : fallback;
+}
+
 void DeckModelParameters::check_all_used(const std::string& model_name) const {
+  for (const auto& [name, b] : blocks_) b->check_all_used(model_name + " <" + name + ">");
   for (const DeckNode& c : node_.children) {
     if (used_.count(c.name)) continue;
     std::string accepted;

@@ -3,6 +3,8 @@
 // parameters are its children. Failures are DeckError / MissingFeature at the
 // child (or at the element when the child is absent). Remembers every name a
 // model asked for, so that check_all_used() can reject children no model reads.
+#include <map>
+#include <memory>
 #include <set>
 #include <string>
 
@@ -21,14 +23,19 @@ class DeckModelParameters final : public ModelParameters {
   bool get_bool(const std::string& name, bool fallback) const override;
   [[noreturn]] void fail(const std::string& name, const std::string& message) const override;
   [[noreturn]] void missing_feature(const std::string& name, const std::string& what) const override;
+  const ModelParameters* block(const std::string& name) const override;
+  std::string type_attribute() const override;
+  double enclosing_double(const std::string& name, double fallback) const override;
 
-  // DeckError at the first child that no get/has call asked for.
+  // DeckError at the first child that no get/has/block call asked for, also
+  // inside every block a model opened.
   void check_all_used(const std::string& model_name) const;
 
  private:
   const DeckNode& at(const std::string& name) const;
   const DeckNode& node_;
   mutable std::set<std::string> used_;
+  mutable std::map<std::string, std::unique_ptr<DeckModelParameters>> blocks_;
 };
 
 }  // namespace tephra

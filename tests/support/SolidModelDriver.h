@@ -4,6 +4,7 @@
 // parameters for every registered model, and a one-point driver over the
 // span interface (header-only; tests only).
 #include <map>
+#include <memory>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -34,6 +35,26 @@ class MapModelParameters final : public ModelParameters {
   [[noreturn]] void missing_feature(const std::string& n, const std::string& m) const override {
     throw std::logic_error(n + ": " + m);
   }
+  // Sub-model blocks (<name type="...">), this block's type attribute, and the
+  // values of the enclosing <material> (melt_temp, specific_heat, ...).
+  std::map<std::string, std::shared_ptr<MapModelParameters>> blocks;
+  std::string type;
+  std::map<std::string, double> enclosing;
+  MapModelParameters& add_block(const std::string& name, const std::string& key,
+                                std::map<std::string, double> v = {}) {
+    auto b = std::make_shared<MapModelParameters>(std::move(v));
+    b->type = key;
+    blocks[name] = b;
+    return *b;
+  }
+  const ModelParameters* block(const std::string& n) const override {
+    auto it = blocks.find(n);
+    return it == blocks.end() ? nullptr : it->second.get();
+  }
+  std::string type_attribute() const override { return type; }
+  double enclosing_double(const std::string& n, double f) const override {
+    return enclosing.count(n) ? enclosing.at(n) : f;
+  }
 };
 
 // Parameters of every registered model for the contract tests (a new model
@@ -47,12 +68,25 @@ inline const std::map<std::string, std::map<std::string, double>>& sample_solid_
       // Vaango's const_test_cmr.ups: G = 2 (C1 + C2) = 2.4e5, nu = 0.49.
       {"comp_mooney_rivlin", {{"he_constant_1", 1.0e5}, {"he_constant_2", 2.0e4}, {"he_PR", 0.49}}},
       {"rigid", {}},
+      // Blocks and material values: sample_solid_blocks().
+      {"elastic_plastic_hp", {{"bulk_modulus", 8.0e9}, {"shear_modulus", 3.0e9}, {"taylor_quinney_coeff", 0.9}}},
   };
   return table;
 }
 
+// The sub-model blocks and enclosing-material values of the composed models'
+// samples (von Mises with linear hardening, sigma_0 = 30 MPa: yields at a
+// shear strain of ~1e-2, so the contracts see both branches).
+inline void add_sample_blocks(const std::string& type, MapModelParameters& p) {
+  if (type != "elastic_plastic_hp") return;
+  p.add_block("yield_condition", "von_mises");
+  p.add_block("flow_model", "linear", {{"sigma_0", 3.0e7}, {"K", 1.0e8}});
+  p.enclosing = {{"melt_temp", 1356.0}, {"specific_heat", 414.0}, {"density", 8930.0}};
+}
+
 inline ConstitutiveModelP make_sample_model(const std::string& type) {
   MapModelParameters p(sample_solid_parameters().at(type));
+  add_sample_blocks(type, p);
   return create_constitutive_model(type, p);
 }
 

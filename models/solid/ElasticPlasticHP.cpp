@@ -1,0 +1,263 @@
+#include "models/solid/ElasticPlasticHP.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <Eigen/LU>
+
+#include "models/ModelParameters.h"
+#include "models/solid/Kinematics.h"
+#include "models/solid/PointLoop.h"
+
+namespace tephra {
+
+namespace {
+enum HistoryIndex { kEpsP = 0, kEpsPRate = 1, kPorosity = 2, kDamage = 3, kHistoryCount = 4 };
+
+std::string join_keys(const std::vector<std::string>& keys) {
+  std::string s;
+  for (const auto& k : keys) s += (s.empty() ? "" : ", ") + k;
+  return s;
+}
+
+// The parameters of an absent block: no children; failures name the block.
+class AbsentBlock final : public ModelParameters {
+ public:
+  AbsentBlock(const ModelParameters& parent, std::string name) : parent_(parent), name_(std::move(name)) {}
+  bool has(const std::string&) const override { return false; }
+  double get_double(const std::string& n) const override { fail(n, "required"); }
+  double get_double(const std::string&, double fallback) const override { return fallback; }
+  bool get_bool(const std::string&, bool fallback) const override { return fallback; }
+  [[noreturn]] void fail(const std::string& n, const std::string& m) const override {
+    parent_.fail(name_, "default <" + name_ + ">: " + n + ": " + m);
+  }
+  [[noreturn]] void missing_feature(const std::string& n, const std::string& m) const override {
+    parent_.missing_feature(name_, n + ": " + m);
+  }
+
+ private:
+  const ModelParameters& parent_;
+  std::string name_;
+};
+
+// Creates the sub-model of block `name` with the family's registry; `fallback`
+// is the key used when the block is absent ("" = the block is required).
+template <class Model, class Create>
+std::shared_ptr<const Model> sub_model(const ModelParameters& params, const std::string& name,
+                                       const std::vector<SubModelEntry<Model>>& table, const std::string& fallback,
+                                       const SubModelContext& ctx, Create create) {
+  const ModelParameters* b = params.block(name);
+  if (!b) {
+    if (fallback.empty()) params.fail(name, "elastic_plastic_hp requires <" + name + " type=\"...\">");
+    return std::shared_ptr<const Model>(create(fallback, AbsentBlock(params, name), ctx));
+  }
+  const std::string key = b->type_attribute();
+  if (key.empty()) params.fail(name, "<" + name + "> needs a type attribute (" + join_keys(sub_model_keys(table)) + ")");
+  auto m = create(key, *b, ctx);
+  if (!m) params.fail(name, "unknown " + name + " type '" + key + "' (valid: " + join_keys(sub_model_keys(table)) + ")");
+  return std::shared_ptr<const Model>(std::move(m));
+}
+
+// The type of an optional block ("" when absent).
+std::string block_type(const ModelParameters& params, const std::string& name) {
+  const ModelParameters* b = params.block(name);
+  return b ? b->type_attribute() : std::string();
+}
+}  // namespace
+
+std::vector<HistoryVariable> ElasticPlasticHP::history() const {
+  return {{"eqPlasticStrain", 1, {0.0}, "equivalent plastic strain ε_p [-]"},
+          {"eqPlasticStrainRate", 1, {0.0}, "equivalent plastic strain rate ε̇_p = Δε_p/Δt [1/s]"},
+          {"porosity", 1, {p_.initial_porosity}, "void volume fraction φ [-] (not evolved)"},
+          {"damage", 1, {p_.initial_damage}, "scalar damage D [-] (not evolved)"}};
+}
+
+bool ElasticPlasticHP::update_point(const Eigen::Matrix3d& F_old, const Eigen::Matrix3d& F_new,
+                                    const Eigen::Matrix3d& stress_old, double T, double dt, double density0,
+                                    double* hist, PointOut& out) const {
+  const Eigen::Matrix3d I = Eigen::Matrix3d::Identity();
+  const double J = F_new.determinant();
+  if (!(J > 0.0) || !(F_old.determinant() > 0.0) || !std::isfinite(J)) return false;
+  const PolarDecomposition a = polar_decomposition(F_old), b = polar_decomposition(F_new);
+  // Unrotated strain increment (midpoint rule for d_hat = sym(U_dot U^{-1})).
+  const Eigen::Matrix3d G = (b.U - a.U) * (0.5 * (a.U + b.U)).inverse();
+  const Eigen::Matrix3d de = 0.5 * (G + G.transpose());
+  const Eigen::Matrix3d tau_n = a.R.transpose() * stress_old * a.R;
+  const double p_n = tau_n.trace() / 3.0;
+  const Eigen::Matrix3d s_n = tau_n - p_n * I;
+
+  // Volumetric part: the EOS gives the mean stress (VT ch. 6).
+  EosInput ei;
+  ei.J = J;
+  ei.p_old = p_n;
+  ei.dt = dt;
+  ei.trace_d = dt > 0.0 ? de.trace() / dt : 0.0;
+  const EosResult eos = eos_->evaluate(ei);
+
+  PlasticState st;
+  st.eps_p = hist[kEpsP];
+  st.eps_p_rate = 0.0;  // the elastic check uses the lowest rate (flow stress nondecreasing in rate)
+  st.temperature = T;
+  st.density0 = density0;
+  st.density = density0 / J;
+  st.pressure = -eos.p;
+  st.porosity = hist[kPorosity];
+  st.melt_temperature = melt_->melt_temperature(st);
+  const double mu = shear_->shear_modulus(st);
+  st.shear_modulus = mu;
+
+  // Deviatoric trial stress (VT eq. 17.50).
+  const Eigen::Matrix3d s_trial = s_n + 2.0 * mu * (de - (de.trace() / 3.0) * I);
+  const double q_trial = std::sqrt(1.5 * s_trial.squaredNorm());
+  Eigen::Matrix3d s = s_trial;
+  double delta = 0.0, sigma_y = 0.0;
+  const bool melted = p_.do_melting && T >= st.melt_temperature;
+  if (melted) {
+    s.setZero();
+  } else if (dt > 0.0 && mu > 0.0) {
+    const FlowStress y0 = flow_->evaluate(st);
+    if (q_trial > y0.sigma_y) {
+      // Radial return: solve g(Δ) = q_trial - 3μΔ - σ_y(ε_p,n + Δ, Δ/dt, T) = 0.
+      double lo = 0.0, hi = q_trial / (3.0 * mu);
+      double x = std::min(hi, (q_trial - y0.sigma_y) / (3.0 * mu + std::max(0.0, y0.d_eps_p)));
+      const double tol = p_.tolerance * std::max(q_trial, 1.0);
+      for (int it = 0; it < 100; ++it) {
+        st.eps_p = hist[kEpsP] + x;
+        st.eps_p_rate = x / dt;
+        const FlowStress y = flow_->evaluate(st);
+        const double g = q_trial - 3.0 * mu * x - y.sigma_y;
+        sigma_y = y.sigma_y;
+        if (std::abs(g) <= tol) break;
+        (g > 0.0 ? lo : hi) = x;
+        const double dg = -3.0 * mu - y.d_eps_p - y.d_eps_p_rate / dt;
+        double next = x - g / dg;
+        if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);  // bisection safeguard
+        if (hi - lo <= 1e-15 * std::max(hi, 1e-300)) break;
+        x = next;
+      }
+      delta = x;
+      s = s_trial * (1.0 - 3.0 * mu * delta / q_trial);
+    }
+  }
+  hist[kEpsP] += delta;
+  hist[kEpsPRate] = dt > 0.0 ? delta / dt : 0.0;
+
+  const Eigen::Matrix3d tau = eos.p * I + s;
+  out.r.stress = b.R * tau * b.R.transpose();
+  out.r.stress = 0.5 * (out.r.stress + out.r.stress.transpose());
+  const double rho = density0 / J;
+  const double kappa_t = J * eos.dp_dJ;  // tangent bulk modulus (VT eq. 17.164)
+  const double kappa = kappa_t > 0.0 ? kappa_t : eos_->bulk_modulus();
+  out.r.wave_speed = std::sqrt((kappa + 4.0 * mu / 3.0) / rho);
+  out.r.energy_density = J * (eos.p * eos.p / (2.0 * eos_->bulk_modulus()) + (mu > 0.0 ? s.squaredNorm() / (4.0 * mu) : 0.0));
+  out.plastic_work = J * sigma_y * delta;
+  out.heating = 0.0;
+  if (!p_.isothermal && delta > 0.0) {
+    st.eps_p = hist[kEpsP];
+    st.eps_p_rate = hist[kEpsPRate];
+    const double cp = cp_->specific_heat(st);
+    out.heating = p_.taylor_quinney * sigma_y * hist[kEpsPRate] / (rho * cp);  // VT 17.27, h^T
+  }
+  return out.r.stress.allFinite() && std::isfinite(out.heating);
+}
+
+long ElasticPlasticHP::update(const SolidUpdateInput& in, const SolidUpdateOutput& out) const {
+  return for_each_point(in.F_new.size(), [&](size_t i) {
+    double hist[kHistoryCount];
+    for (int k = 0; k < kHistoryCount; ++k) hist[k] = out.history[k][i];
+    PointOut po;
+    if (!update_point(in.F_old[i], in.F_new[i], in.stress_old[i], in.temperature[i], in.dt, in.density0, hist, po))
+      return false;
+    for (int k = 0; k < kHistoryCount; ++k) out.history[k][i] = hist[k];
+    out.stress[i] = po.r.stress;
+    out.wave_speed[i] = po.r.wave_speed;
+    out.energy_density[i] = po.r.energy_density;
+    out.plastic_work[i] = po.plastic_work;
+    out.heating[i] = po.heating;
+    return true;
+  });
+}
+
+ConstitutiveModelP ElasticPlasticHP::create(const ModelParameters& params) {
+  auto m = std::make_shared<ElasticPlasticHP>();
+  ElasticPlasticHPParams& p = m->p_;
+  p.bulk_modulus = params.get_double("bulk_modulus");
+  p.shear_modulus = params.get_double("shear_modulus");
+  if (!(p.bulk_modulus > 0.0)) params.fail("bulk_modulus", "must be > 0");
+  if (!(p.shear_modulus > 0.0)) params.fail("shear_modulus", "must be > 0");
+  p.taylor_quinney = params.get_double("taylor_quinney_coeff", 0.9);
+  if (!(p.taylor_quinney >= 0.0 && p.taylor_quinney <= 1.0)) params.fail("taylor_quinney_coeff", "must be in [0, 1]");
+  p.tolerance = params.get_double("tolerance", 1e-12);
+  if (!(p.tolerance > 0.0)) params.fail("tolerance", "must be > 0");
+  p.isothermal = params.get_bool("isothermal", false);
+  p.do_melting = params.get_bool("do_melting", false);
+  params.get_double("initial_material_temperature", 0.0);  // Vaango: reference of the thermal strain (alpha = 0 here)
+  params.get_double("critical_stress", 0.0);               // used by check_max_stress_failure only
+  if (params.get_double("coeff_thermal_expansion", 0.0) != 0.0)
+    params.missing_feature("coeff_thermal_expansion", "elastic_plastic_hp thermal expansion strain (alpha != 0)");
+  if (params.get_bool("evolve_porosity", false))
+    params.missing_feature("evolve_porosity", "elastic_plastic_hp porosity evolution");
+  if (params.get_bool("evolve_damage", false))
+    params.missing_feature("evolve_damage", "elastic_plastic_hp damage evolution");
+  if (params.get_bool("check_TEPLA_failure_criterion", false))
+    params.missing_feature("check_TEPLA_failure_criterion", "elastic_plastic_hp TEPLA failure");
+  if (params.get_bool("check_max_stress_failure", false))
+    params.missing_feature("check_max_stress_failure", "elastic_plastic_hp max-stress failure");
+  p.initial_porosity = params.get_double("initial_mean_porosity", 0.0);
+  p.initial_damage = params.get_double("initial_mean_scalar_damage", 0.0);
+  if (params.get_double("initial_std_porosity", 0.0) != 0.0)
+    params.missing_feature("initial_std_porosity", "elastic_plastic_hp random initial porosity");
+  if (params.get_double("initial_std_scalar_damage", 0.0) != 0.0)
+    params.missing_feature("initial_std_scalar_damage", "elastic_plastic_hp random initial damage");
+  // Blocks of the features that are off: accepted, their parameters unused (as Vaango).
+  for (const char* name : {"damage_model", "internal_variable_model", "initial_porosity_distrib",
+                           "initial_scalar_damage_distrib", "critical_porosity", "critical_scalar_damage",
+                           "frac_nucleation", "meanstrain_nucleation", "stddevstrain_nucleation"})
+    params.has(name);
+  const std::string yield = block_type(params, "yield_condition");
+  if (yield.empty()) params.fail("yield_condition", "elastic_plastic_hp requires <yield_condition type=\"von_mises\">");
+  if (yield != "von_mises" && yield != "vonMises")
+    params.missing_feature("yield_condition", "elastic_plastic_hp yield_condition '" + yield + "' (implemented: von_mises)");
+  const std::string stab = block_type(params, "stability_check");
+  if (!stab.empty() && stab != "none")
+    params.missing_feature("stability_check", "elastic_plastic_hp stability_check '" + stab + "'");
+  const std::string kin = block_type(params, "kinematic_hardening_model");
+  if (!kin.empty() && kin != "none")
+    params.missing_feature("kinematic_hardening_model", "elastic_plastic_hp kinematic hardening '" + kin + "'");
+  const std::string dev = block_type(params, "deviatoric_stress_model");
+  if (!dev.empty() && dev != "hypoElastic")
+    params.missing_feature("deviatoric_stress_model", "elastic_plastic_hp deviatoric_stress_model '" + dev + "'");
+
+  SubModelContext ctx;
+  ctx.bulk_modulus = p.bulk_modulus;
+  ctx.shear_modulus = p.shear_modulus;
+  ctx.melt_temperature = params.enclosing_double("melt_temp", 0.0);
+  ctx.specific_heat = params.enclosing_double("specific_heat", 0.0);
+  ctx.room_temperature = params.enclosing_double("room_temp", 0.0);
+  ctx.density0 = params.enclosing_double("density", 0.0);
+  m->eos_ = sub_model(params, "equation_of_state", plasticity_eos_models(), "default_hypo", ctx,
+                      [](const std::string& k, const ModelParameters& q, const SubModelContext& c) {
+                        return create_plasticity_eos(k, q, c);
+                      });
+  m->shear_ = sub_model(params, "shear_modulus_model", shear_modulus_models(), "constant_shear", ctx,
+                        [](const std::string& k, const ModelParameters& q, const SubModelContext& c) {
+                          return create_shear_modulus_model(k, q, c);
+                        });
+  m->melt_ = sub_model(params, "melting_temp_model", melting_temperature_models(), "constant_Tm", ctx,
+                       [](const std::string& k, const ModelParameters& q, const SubModelContext& c) {
+                         return create_melting_temperature_model(k, q, c);
+                       });
+  m->cp_ = sub_model(params, "specific_heat_model", specific_heat_models(), "constant_Cp", ctx,
+                     [](const std::string& k, const ModelParameters& q, const SubModelContext& c) {
+                       return create_specific_heat_model(k, q, c);
+                     });
+  m->flow_ = sub_model(params, "flow_model", flow_stress_models(), "", ctx,
+                       [](const std::string& k, const ModelParameters& q, const SubModelContext& c) {
+                         return create_flow_stress_model(k, q, c);
+                       });
+  if (m->flow_->type() == "mechanical_threshold_stress")
+    params.missing_feature("flow_model", "elastic_plastic_hp with the MTS evolving structure stress sigma_e");
+  return m;
+}
+
+}  // namespace tephra

@@ -1,0 +1,79 @@
+#pragma once
+// Vaango's hypo-elastic-plastic metal model, type "elastic_plastic_hp" (VT
+// ch. 17, Algorithm 1 of §17.2.3 for the von Mises case; Vaango class
+// ElasticPlasticHP), composed from the sub-models of models/plasticity/.
+//
+// One step of a point (unrotated frame, Green-Naghdi, VT eq. 17.1-17.2):
+//   F = R U;  tau_n = R_n^T sigma_n R_n;
+//   de = sym((U_{n+1} - U_n) ((U_n + U_{n+1})/2)^{-1})     (~ d_hat dt; as hypo_elastic)
+//   pressure: p_{n+1} = EOS(J, p_n, tr de / dt, dt)        (mean stress, VT ch. 6)
+//   T_m = melt(p̄, ρ), μ = shear(p̄, ρ, T, T_m)               (VT ch. 13, 7)
+//   s_trial = s_n + 2 μ dev(de)                            (VT eq. 17.50)
+//   elastic if σ_eff(s_trial) <= σ_y(ε_p,n, 0, T), otherwise radial return
+//   for von Mises (N = 3/2 s/σ_eff, ε̇_p = Δε_p/Δt; VT 17.79 specialised):
+//     g(Δ) = σ_eff_trial - 3 μ Δ - σ_y(ε_p,n + Δ, Δ/Δt, T) = 0,
+//   Newton with the flow model's exact derivatives
+//     g'(Δ) = -3μ - ∂σ_y/∂ε_p - (∂σ_y/∂ε̇_p)/Δt,
+//   safeguarded by bisection on [0, σ_eff_trial/(3μ)] (g(0) > 0 >= g(upper));
+//   s_{n+1} = s_trial (1 - 3 μ Δ / σ_eff_trial);  sigma_{n+1} = R_{n+1} (p I + s) R_{n+1}^T.
+// Heating (adiabatic, VT eq. 17.27 with h^T): dT/dt = χ σ_y ε̇_p / (ρ C_p),
+// χ = <taylor_quinney_coeff>; 0 when <isothermal>. Plastic work per reference
+// volume: J σ_y Δε_p. Melting (<do_melting>): s = 0 when T >= T_m.
+// Wave speed c² = (κ + 4μ/3)/ρ with the tangent bulk modulus κ = J ∂p/∂J (VT 17.164).
+// Stored energy: J [p²/(2K) + s:s/(4μ)] (complementary energy, as hypo_elastic).
+//
+// Mie-Grüneisen: the energy term Γ0 E uses E = 0 (the Hugoniot reference; the
+// internal energy is not carried yet).
+// MissingFeature: yield conditions other than von_mises, kinematic hardening,
+// evolve_porosity, evolve_damage, stability checks other than "none",
+// coeff_thermal_expansion != 0, stochastic initial porosity/damage,
+// deviatoric_stress_model other than hypoElastic, TEPLA / max-stress failure.
+#include <memory>
+
+#include "models/plasticity/FlowStressModel.h"
+#include "models/plasticity/PlasticityEos.h"
+#include "models/plasticity/ThermalModels.h"
+#include "models/solid/ConstitutiveModel.h"
+
+namespace tephra {
+
+struct ElasticPlasticHPParams {
+  double bulk_modulus = 0.0;    // <bulk_modulus> K [Pa]
+  double shear_modulus = 0.0;   // <shear_modulus> μ_0 [Pa]
+  double taylor_quinney = 0.9;  // <taylor_quinney_coeff> χ
+  double tolerance = 1e-12;     // <tolerance>: relative tolerance of the return
+  bool isothermal = false;      // <isothermal>
+  bool do_melting = false;      // <do_melting>
+  double initial_porosity = 0;  // <initial_mean_porosity> (carried, not evolved)
+  double initial_damage = 0;    // <initial_mean_scalar_damage> (carried, not evolved)
+};
+
+class ElasticPlasticHP final : public ConstitutiveModel {
+ public:
+  static ConstitutiveModelP create(const ModelParameters& params);
+
+  std::string type() const override { return "elastic_plastic_hp"; }
+  long update(const SolidUpdateInput& in, const SolidUpdateOutput& out) const override;
+  std::vector<HistoryVariable> history() const override;
+  double bulk_modulus() const override { return p_.bulk_modulus; }
+  double shear_modulus() const override { return p_.shear_modulus; }
+
+  // The point update (what update() does for one point; unit tests call it).
+  // hist = {ε_p, ε̇_p, φ, D}, read at t_n and overwritten with t_{n+1}.
+  struct PointOut {
+    SolidPointResult r;
+    double plastic_work = 0.0;
+    double heating = 0.0;
+  };
+  bool update_point(const Eigen::Matrix3d& F_old, const Eigen::Matrix3d& F_new, const Eigen::Matrix3d& stress_old,
+                    double T, double dt, double density0, double* hist, PointOut& out) const;
+
+  ElasticPlasticHPParams p_;
+  std::shared_ptr<const PlasticityEos> eos_;
+  std::shared_ptr<const ShearModulusModel> shear_;
+  std::shared_ptr<const FlowStressModel> flow_;
+  std::shared_ptr<const MeltingTemperatureModel> melt_;
+  std::shared_ptr<const SpecificHeatModel> cp_;
+};
+
+}  // namespace tephra
