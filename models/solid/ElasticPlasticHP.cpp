@@ -1,5 +1,7 @@
 #include "models/solid/ElasticPlasticHP.h"
 
+#include <stdexcept>
+
 #include <algorithm>
 #include <cmath>
 
@@ -30,9 +32,11 @@ class AbsentBlock final : public ModelParameters {
   bool get_bool(const std::string&, bool fallback) const override { return fallback; }
   [[noreturn]] void fail(const std::string& n, const std::string& m) const override {
     parent_.fail(name_, "default <" + name_ + ">: " + n + ": " + m);
+    throw std::logic_error("ModelParameters::fail returned");  // its contract is to throw
   }
   [[noreturn]] void missing_feature(const std::string& n, const std::string& m) const override {
     parent_.missing_feature(name_, n + ": " + m);
+    throw std::logic_error("ModelParameters::missing_feature returned");  // its contract is to throw
   }
 
  private:
