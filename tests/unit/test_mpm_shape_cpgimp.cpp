@@ -13,6 +13,7 @@
 #include "mpm/NodeGrid.h"
 #include "mpm/Particles.h"
 #include "mpm/shape/Interpolator.h"
+#include "mpm/shape/ShapeBspline.h"
 #include "mpm/shape/ShapeGimp.h"
 
 namespace tephra {
@@ -115,6 +116,39 @@ TEST(MpmShapeCpGimp, StencilIdentitiesWithStretchedDomains) {
   EXPECT_EQ(compute_stencils(p, g, {InterpolatorKind::CpGimp, 1e10}, s), 5);
   p.F[5](1, 1) = -0.1;
   EXPECT_EQ(compute_stencils(p, g, {InterpolatorKind::CpGimp, 1e10}, s), 5);
+}
+
+// The positions of the AA runs at 1 particle per cell (cell centres, xi =
+// k + 1/2) and of particles on nodes (xi = k), where the quadratic B-spline
+// and uGIMP (l = 1/2, the same function) switch pieces: the gradient still
+// reproduces a linear field exactly, sum dS_i i = 1 and sum dS_i = 0, and
+// the values are the closed forms (B-spline at d = 0: 3/4, +-1: 1/8, slopes
+// 0 and -+1/2; at d = +-1/2: 1/2 each, slopes -+1).
+TEST(MpmShapeCpGimp, GradientCompletenessOnNodesAndCellCentres) {
+  for (double xi : {3.0, 3.5, 3.0 + 1e-14, 3.5 - 1e-14}) {
+    const ShapeAxis b = quadratic_bspline_axis(xi), g = gimp_axis(xi, 0.5);
+    for (const ShapeAxis& a : {b, g}) {
+      double sum_d = 0, sum_di = 0;
+      for (int k = 0; k < a.count; ++k) {
+        sum_d += a.dS[k];
+        sum_di += a.dS[k] * (a.first + k);
+      }
+      EXPECT_NEAR(sum_d, 0.0, 1e-13) << xi;
+      EXPECT_NEAR(sum_di, 1.0, 1e-13) << xi;
+    }
+    for (int k = 0; k < 3; ++k) {
+      EXPECT_NEAR(b.S[k], g.S[k], 1e-14);
+      EXPECT_NEAR(b.dS[k], g.dS[k], 1e-13);
+    }
+  }
+  const ShapeAxis on = quadratic_bspline_axis(3.0);
+  EXPECT_EQ(on.first, 2);
+  EXPECT_DOUBLE_EQ(on.S[0], 0.125);
+  EXPECT_DOUBLE_EQ(on.S[1], 0.75);
+  EXPECT_DOUBLE_EQ(on.S[2], 0.125);
+  EXPECT_DOUBLE_EQ(on.dS[0], -0.5);
+  EXPECT_DOUBLE_EQ(on.dS[1], 0.0);
+  EXPECT_DOUBLE_EQ(on.dS[2], 0.5);
 }
 
 }  // namespace
