@@ -18,6 +18,7 @@ int stencil_width(InterpolatorKind k) {
     case InterpolatorKind::Gimp: return 27;
     case InterpolatorKind::QuadraticBspline: return 27;
     case InterpolatorKind::Cpdi: return 64;
+    case InterpolatorKind::CpGimp: return 64;
   }
   return 0;
 }
@@ -28,6 +29,7 @@ std::string interpolator_name(InterpolatorKind k) {
     case InterpolatorKind::Gimp: return "gimp";
     case InterpolatorKind::QuadraticBspline: return "3rdorderBS";
     case InterpolatorKind::Cpdi: return "cpdi";
+    case InterpolatorKind::CpGimp: return "cpgimp";
   }
   return "?";
 }
@@ -39,7 +41,9 @@ namespace {
 template <InterpolatorKind K>
 bool fill_particle(const Particles& p, const NodeGrid& g, const InterpolatorSpec& spec, std::size_t i,
                    Stencils& s) {
-  constexpr int W = K == InterpolatorKind::Linear ? 8 : (K == InterpolatorKind::Cpdi ? 64 : 27);
+  constexpr int W = K == InterpolatorKind::Linear ? 8
+                    : (K == InterpolatorKind::Cpdi || K == InterpolatorKind::CpGimp) ? 64
+                                                                                     : 27;
   IntVec3 node[64];
   double w[64];
   Vec3 grad[64];
@@ -59,10 +63,23 @@ bool fill_particle(const Particles& p, const NodeGrid& g, const InterpolatorSpec
     count = 64;
   } else {
     ShapeAxis ax[3];
+    [[maybe_unused]] double l_cp[3] = {0.0, 0.0, 0.0};
+    if constexpr (K == InterpolatorKind::CpGimp) {
+      // cpGIMP half-lengths (index units): eq. 1.93 l = F l0 in 1-D; in 3-D
+      // the cuboid circumscribing the deformed domain F size (theory manual
+      // §1.6.3, ref. [17]): l_d = (1/2) sum_j |(F size)_dj|, = l0_d F_dd for
+      // a diagonal F. The convolution of gimp_axis_any holds for 0 < l <= 1.
+      const Mat3 edges = p.F[i] * p.psize[i];
+      for (int d = 0; d < 3; ++d) {
+        l_cp[d] = 0.5 * edges.row(d).cwiseAbs().sum();
+        if (!(l_cp[d] > 0.0 && l_cp[d] <= 1.0) || !(p.F[i].determinant() > 0.0)) return false;
+      }
+    }
     for (int d = 0; d < 3; ++d) {
       if constexpr (K == InterpolatorKind::Linear) ax[d] = linear_axis(xi[d]);
       if constexpr (K == InterpolatorKind::Gimp) ax[d] = gimp_axis(xi[d], 0.5 * p.psize[i](d, d));
       if constexpr (K == InterpolatorKind::QuadraticBspline) ax[d] = quadratic_bspline_axis(xi[d]);
+      if constexpr (K == InterpolatorKind::CpGimp) ax[d] = gimp_axis_any(xi[d], l_cp[d]);
     }
     count = tensor_product(ax, g.h, node, w, grad);
     support_inside = true;
@@ -131,6 +148,7 @@ long compute_stencils(const Particles& p, const NodeGrid& g, const InterpolatorS
     case InterpolatorKind::Gimp: return fill<InterpolatorKind::Gimp>(p, g, spec, s);
     case InterpolatorKind::QuadraticBspline: return fill<InterpolatorKind::QuadraticBspline>(p, g, spec, s);
     case InterpolatorKind::Cpdi: return fill<InterpolatorKind::Cpdi>(p, g, spec, s);
+    case InterpolatorKind::CpGimp: return fill<InterpolatorKind::CpGimp>(p, g, spec, s);
   }
   return -1;
 }

@@ -4,7 +4,7 @@
 //
 // A stencil is stored flat: particle p owns the entries [p W, (p+1) W) of
 // node / w / grad, W = width(kind) (8 linear, 27 gimp and 3rdorderBS, 64
-// cpdi). Unused entries have w = 0, grad = 0 and a valid node, so the
+// cpdi and cpgimp). Unused entries have w = 0, grad = 0 and a valid node, so the
 // transfers (mpm/Transfers.h) loop over W entries without branches. The
 // interpolator is chosen once per material per step; the shape-function code
 // inside the loop is a template instance (no per-particle dispatch).
@@ -19,7 +19,13 @@ namespace tephra {
 struct Particles;
 struct NodeGrid;
 
-enum class InterpolatorKind { Linear, Gimp, Cpdi, QuadraticBspline };
+// CpGimp: contiguous-particle GIMP (theory manual §1.6.3, eq. 1.93), the
+// GIMP convolution with the half-lengths of the cuboid circumscribing the
+// deformed domain F size (l_d = l0_d F_dd for diagonal F; ShapeGimp.h
+// gimp_axis_any). Not a Vaango interpolator and not yet selectable from a
+// deck (MpmFlags accepts Vaango's names only); it is the candidate fix of
+// the uGIMP stall on AxisAligned (docs/mpm-convergence.md).
+enum class InterpolatorKind { Linear, Gimp, Cpdi, QuadraticBspline, CpGimp };
 
 struct InterpolatorSpec {
   InterpolatorKind kind = InterpolatorKind::Linear;
@@ -28,7 +34,7 @@ struct InterpolatorSpec {
 
 // Entries per particle.
 int stencil_width(InterpolatorKind k);
-// Vaango's name ("linear", "gimp", "cpdi", "3rdorderBS").
+// Vaango's name ("linear", "gimp", "cpdi", "3rdorderBS"; Tephra's "cpgimp").
 std::string interpolator_name(InterpolatorKind k);
 
 struct Stencils {

@@ -15,6 +15,7 @@
 // particle (N - 1, N, N + 1 with N = round(xi)) hold every non-zero weight.
 // "u"GIMP: l_p is the particle's size at creation (Vaango keeps pSize fixed
 // unless the interpolator is cpdi), not the deformed size.
+#include <algorithm>
 #include <cmath>
 
 #include "mpm/shape/ShapeAxis.h"
@@ -50,6 +51,36 @@ inline ShapeAxis gimp_axis(double xi, double l) {
   a.first = static_cast<int>(std::floor(xi + 0.5)) - 1;
   a.count = 3;
   for (int k = 0; k < 3; ++k) gimp_1d(xi - (a.first + k), l, a.S[k], a.dS[k]);
+  return a;
+}
+
+// The same convolution for any half-length 0 < l <= 1 (index units), as the
+// exact integral S(d) = (1/2l) int_{d-l}^{d+l} hat(s) ds = (H(d+l) - H(d-l))/(2l)
+// with H the antiderivative of the hat, H(s) = 0 (s < -1), (1+s)^2/2 (s < 0),
+// 1 - (1-s)^2/2 (s < 1), 1; dS/dd = (hat(d+l) - hat(d-l))/(2l). For l <= 1/2
+// it is eqs. 1.91-1.92; for l > 1/2 (a deformed domain, l = l0 F_dd) the
+// support |d| < 1 + l holds up to four nodes. Used by cpGIMP
+// (InterpolatorKind::CpGimp, Bardenhagen & Kober 2004), whose domains follow
+// the stretch so that they keep tiling the body.
+inline double hat_integral(double s) {
+  if (s <= -1.0) return 0.0;
+  if (s <= 0.0) return 0.5 * (1.0 + s) * (1.0 + s);
+  if (s <= 1.0) return 1.0 - 0.5 * (1.0 - s) * (1.0 - s);
+  return 1.0;
+}
+inline double hat_1d(double s) { return std::max(0.0, 1.0 - std::abs(s)); }
+
+inline ShapeAxis gimp_axis_any(double xi, double l) {
+  ShapeAxis a;
+  // Nodes i with |xi - i| < 1 + l: floor(xi - l) .. floor(xi + l) + 1 (<= 4 for l <= 1).
+  a.first = static_cast<int>(std::floor(xi - l));
+  a.count = 0;
+  for (int i = a.first; i <= static_cast<int>(std::floor(xi + l)) + 1 && a.count < 4; ++i) {
+    const double d = xi - i;
+    a.S[a.count] = (hat_integral(d + l) - hat_integral(d - l)) / (2.0 * l);
+    a.dS[a.count] = (hat_1d(d + l) - hat_1d(d - l)) / (2.0 * l);
+    ++a.count;
+  }
   return a;
 }
 
