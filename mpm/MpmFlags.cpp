@@ -94,8 +94,10 @@ MpmFlags parse_mpm_flags(const DeckNode* mpm) {
     }
     if (c.name == "interpolator") {
       bool found = false;
+      // cpgimp (contiguous-particle GIMP, theory manual eq. 1.93) is Tephra's
+      // addition: Vaango's gimp keeps the particle domain at its initial size.
       for (InterpolatorKind k : {InterpolatorKind::Linear, InterpolatorKind::Gimp, InterpolatorKind::Cpdi,
-                                 InterpolatorKind::QuadraticBspline})
+                                 InterpolatorKind::QuadraticBspline, InterpolatorKind::CpGimp})
         if (c.text == interpolator_name(k)) {
           flags.interpolator.kind = k;
           found = true;
@@ -106,8 +108,8 @@ MpmFlags parse_mpm_flags(const DeckNode* mpm) {
       for (const char* k : known)
         if (c.text == k)
           c.missing_feature("MPM interpolator '" + c.text +
-                            "' (implemented: linear, gimp, cpdi, 3rdorderBS)");
-      c.fail("unknown MPM interpolator '" + c.text + "' (implemented: linear, gimp, cpdi, 3rdorderBS)");
+                            "' (implemented: linear, gimp, cpdi, 3rdorderBS, cpgimp)");
+      c.fail("unknown MPM interpolator '" + c.text + "' (implemented: linear, gimp, cpdi, 3rdorderBS, cpgimp)");
     }
     if (c.name == "cpdi_lcrit") {
       flags.interpolator.cpdi_lcrit = c.as_double();

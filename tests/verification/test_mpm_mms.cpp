@@ -91,7 +91,7 @@ TEST(MpmMmsConvergence, DISABLED_QuadraticBsplineSecondOrder) {
 // 6.411e-4, 1.574e-4 (orders 1.99, 2.03) with these settings. It is not a
 // Vaango interpolator name and MpmFlags does not accept "cpgimp" yet; enable
 // this test once the deck can select it (docs/mpm-convergence.md).
-TEST(MpmMmsConvergence, DISABLED_CpGimpSecondOrder) {
+TEST(MpmMmsConvergence, CpGimpSecondOrder) {
   const Study s = run_study("cpgimp");
   EXPECT_GE(s.order(1), 1.8);
   EXPECT_GE(s.order(0), 1.8);
