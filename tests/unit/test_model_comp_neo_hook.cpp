@@ -13,6 +13,7 @@
 #include "core/base/Types.h"
 #include "models/ModelParameters.h"
 #include "models/solid/CompNeoHookean.h"
+#include "tests/support/SolidModelDriver.h"
 
 namespace tephra {
 namespace {
@@ -124,26 +125,8 @@ TEST(ModelCompNeoHook, SmallStrainLimitIsLinearElasticity) {
 }
 
 // ---- registry
-class MapParameters final : public ModelParameters {
- public:
-  std::map<std::string, double> values;
-  bool has(const std::string& n) const override { return values.count(n) > 0; }
-  double get_double(const std::string& n) const override {
-    if (!has(n)) throw std::runtime_error("missing " + n);
-    return values.at(n);
-  }
-  double get_double(const std::string& n, double f) const override { return has(n) ? values.at(n) : f; }
-  bool get_bool(const std::string& n, bool f) const override { return has(n) ? values.at(n) != 0 : f; }
-  [[noreturn]] void fail(const std::string& n, const std::string& m) const override {
-    throw std::invalid_argument(n + ": " + m);
-  }
-  [[noreturn]] void missing_feature(const std::string& n, const std::string& m) const override {
-    throw std::logic_error(n + ": " + m);
-  }
-};
-
 TEST(ModelCompNeoHook, RegistryCreatesAndValidates) {
-  MapParameters p;
+  test::MapModelParameters p;
   p.values = {{"bulk_modulus", 833.3}, {"shear_modulus", 384.6}};
   ConstitutiveModelP m = create_constitutive_model("comp_neo_hook", p);
   ASSERT_TRUE(m);

@@ -5,20 +5,11 @@
 #include <cmath>
 
 #include "models/solid/CompNeoHookean.h"
+#include "core/geometry/Primitives.h"
 #include "mpm/MpmComponent.h"
 
 namespace tephra {
 namespace {
-
-struct TestBox final : GeometryPiece {
-  Vec3 lo, hi;
-  TestBox(Vec3 a, Vec3 b) : lo(a), hi(b) {}
-  bool inside(const Vec3& x) const override {
-    return (x.array() >= lo.array()).all() && (x.array() <= hi.array()).all();
-  }
-  BoundingBox bounding_box() const override { return {lo, hi}; }
-  std::string type() const override { return "box"; }
-};
 
 // Unit cube, 8^3 cells (h = 0.125), one comp_neo_hook material filling [0.25, 0.75]^3
 // with 2x2x2 particles per cell (512 particles).
@@ -33,7 +24,7 @@ MpmSetup block_setup(const Vec3& velocity) {
   m.density = 1000.0;
   m.model = std::make_shared<CompNeoHookean>(CompNeoHookeanParams{833.3, 384.6});
   ParticleSource src;
-  src.piece = std::make_shared<TestBox>(Vec3::Constant(0.25), Vec3::Constant(0.75));
+  src.piece = std::make_shared<BoxPiece>(Vec3::Constant(0.25), Vec3::Constant(0.75));
   src.res = IntVec3::Constant(2);
   src.velocity = velocity;
   src.temperature = 300.0;

@@ -9,20 +9,11 @@
 #include "core/io/StateArchive.h"
 #include "models/solid/HypoElastic.h"
 #include "models/solid/RigidMaterial.h"
+#include "core/geometry/Primitives.h"
 #include "mpm/MpmComponent.h"
 
 namespace tephra {
 namespace {
-
-struct Box final : GeometryPiece {
-  Vec3 lo, hi;
-  Box(Vec3 a, Vec3 b) : lo(a), hi(b) {}
-  bool inside(const Vec3& x) const override {
-    return (x.array() >= lo.array()).all() && (x.array() <= hi.array()).all();
-  }
-  BoundingBox bounding_box() const override { return {lo, hi}; }
-  std::string type() const override { return "box"; }
-};
 
 // A model that counts its steps in a scalar history column and carries a
 // tensor column (initial I) scaled by 2 each step: the driver must size,
@@ -61,7 +52,7 @@ MpmSetup block(ConstitutiveModelP model, const Vec3& velocity) {
   m.density = 1000.0;
   m.model = std::move(model);
   ParticleSource src;
-  src.piece = std::make_shared<Box>(Vec3::Constant(0.25), Vec3::Constant(0.75));
+  src.piece = std::make_shared<BoxPiece>(Vec3::Constant(0.25), Vec3::Constant(0.75));
   src.res = IntVec3::Constant(2);
   src.velocity = velocity;
   src.temperature = 300.0;
