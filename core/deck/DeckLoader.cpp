@@ -21,13 +21,6 @@ int line_of(const std::string& source, ptrdiff_t offset) {
   return 1 + static_cast<int>(std::count(source.begin(), source.begin() + offset, '\n'));
 }
 
-std::string trim(const std::string& s) {
-  size_t b = s.find_first_not_of(" \t\r\n");
-  if (b == std::string::npos) return "";
-  size_t e = s.find_last_not_of(" \t\r\n");
-  return s.substr(b, e - b + 1);
-}
-
 struct Loader {
   std::vector<std::string> files;
   std::vector<std::string> stack;  // include chain, for cycle detection

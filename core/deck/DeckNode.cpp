@@ -9,16 +9,12 @@
 
 namespace tephra {
 
-namespace {
-
 std::string trim(const std::string& s) {
   size_t b = s.find_first_not_of(" \t\r\n");
   if (b == std::string::npos) return "";
   size_t e = s.find_last_not_of(" \t\r\n");
   return s.substr(b, e - b + 1);
 }
-
-}  // namespace
 
 std::optional<double> parse_double(const std::string& raw) {
   std::string t = trim(raw);

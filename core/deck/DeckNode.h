@@ -76,6 +76,8 @@ class DeckNode {
 
 // Value parsers shared by the getters and the schema validator. They return
 // nullopt when the text does not parse.
+// Text without leading/trailing blanks (space, tab, CR, LF).
+std::string trim(const std::string& s);
 std::optional<double> parse_double(const std::string& text);
 std::optional<long long> parse_integer(const std::string& text);
 std::optional<bool> parse_bool(const std::string& text);
