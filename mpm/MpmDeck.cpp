@@ -109,17 +109,28 @@ std::unique_ptr<MpmComponent> make_mpm_component(const Deck& deck) {
   MpmSetup setup;
   const DeckNode& grid_node = root.require_child("Grid");
   setup.grid = make_grid(grid_node);
-  if ((setup.grid.periodic.array() != 0).any()) grid_node.missing_feature("MPM with periodic boundaries");
 
   setup.flags = parse_mpm_flags(root.child("MPM"));
-  // Vaango applies the <PhysicalBC><MPM> loads (pressure, force, ...) only
-  // with <use_load_curves>; none is implemented yet.
-  if (setup.flags.use_load_curves)
-    if (const DeckNode* bc = root.child("PhysicalBC"))
-      if (const DeckNode* mpm_bc = bc->child("MPM"))
-        if (!mpm_bc->children.empty())
-          mpm_bc->children.front().missing_feature("MPM physical boundary condition <" +
-                                                   mpm_bc->children.front().name + "> (load curves)");
+  // <PhysicalBC><MPM>: pressure (with <use_load_curves>) and force loads (mpm/loads/ParticleLoads.h).
+  setup.loads = parse_particle_loads(root.child("PhysicalBC"), setup.flags.use_load_curves);
+  if (!setup.loads.empty() && !setup.flags.mms.empty())
+    root.require_child("PhysicalBC").missing_feature("<PhysicalBC> loads together with <run_MMS_problem>");
+  if (setup.flags.use_prescribed_deformation) {
+    const DeckNode& mpm_flags = root.require_child("MPM");
+    if (setup.flags.deformation_gradient != "first_order")
+      mpm_flags.require_child("deformation_gradient")
+          .missing_feature("a prescribed deformation with deformation_gradient algorithm '" +
+                           setup.flags.deformation_gradient + "' (implemented: first_order)");
+    setup.prescribed = read_prescribed_deformation(mpm_flags.require_child("prescribed_deformation_file"));
+  }
+  // AccStrainEnergy is summed every step only when the deck saves it.
+  if (const DeckNode* archiver = root.child("DataArchiver"))
+    for (const DeckNode* save : archiver->children_named("save"))
+      if (save->attribute("label") == std::optional<std::string>("AccStrainEnergy")) setup.accumulate_strain_energy = true;
+  // Periodic directions (mpm/PeriodicGrid.h): linear interpolation only.
+  if ((setup.grid.periodic.array() != 0).any() && setup.flags.interpolator.kind != InterpolatorKind::Linear)
+    grid_node.missing_feature("periodic MPM with the '" + interpolator_name(setup.flags.interpolator.kind) +
+                              "' interpolator (implemented: linear)");
   // GIMP, CPDI and B-spline supports reach past the particle's cell: a
   // particle near a domain face weights the node layer of the extra cells.
   if (setup.flags.interpolator.kind != InterpolatorKind::Linear && (setup.grid.extra_cells.array() < 1).any())
@@ -146,6 +157,8 @@ std::unique_ptr<MpmComponent> make_mpm_component(const Deck& deck) {
     }
   }
   if (setup.materials.empty()) mpm.fail("<MaterialProperties><MPM> has no <material>");
+  if ((setup.grid.periodic.array() != 0).any() && setup.contact && setup.materials.size() > 1)
+    grid_node.missing_feature("periodic MPM with contact (normals across a periodic face)");
   for (MpmMaterial& m : setup.materials)
     m.bcs = parse_grid_boundary_conditions(grid_node.child("BoundaryConditions"), m.index);
   for (MpmMaterial& m : setup.materials)
