@@ -10,6 +10,7 @@
 #include "core/base/Errors.h"
 #include "core/base/PhaseTimers.h"
 #include "mpm/ArtificialViscosity.h"
+#include "mpm/Axisymmetric.h"
 #include "mpm/DeformationGradient.h"
 #include "mpm/StrainWork.h"
 #include "mpm/Transfers.h"
@@ -37,6 +38,7 @@ void MpmComponent::initialize() {
   for (MpmMaterial& m : setup_.materials) {
     m.particles = Particles{};
     seed_particles(setup_.grid, m.sources, m.density, m.particles, next_id);
+    if (setup_.flags.axisymmetric) make_axisymmetric_particles(setup_.grid.dx, m.density, m.particles);  // per radian
     if (m.mms) initialize_mms_particles(*m.mms, m.particles);  // x = X + u(X,0), v, F at t = 0
     // The model's history columns at their declared initial values.
     m.particles.history.clear();
@@ -92,7 +94,8 @@ void MpmComponent::fail_particle(const MpmMaterial& m, std::size_t i, int step, 
 // Stencils + P2G (Alg. 5) on a reset grid, with the grid BCs on v_g.
 void MpmComponent::interpolate_to_grid(MpmMaterial& m, int step, const char* phase) {
   PhaseTimers::Scope t(phase_timers(), "MPM: interpolate particles to grid");
-  const long bad = compute_stencils(m.particles, m.grid, setup_.flags.interpolator, m.stencils);
+  const long bad = setup_.flags.axisymmetric ? compute_axisymmetric_stencils(m.particles, m.grid, m.stencils)
+                                             : compute_stencils(m.particles, m.grid, setup_.flags.interpolator, m.stencils);
   if (bad >= 0) fail_particle(m, std::size_t(bad), step, phase, "particle is outside the grid");
   m.grid.reset();
   particles_to_grid(m.particles, m.stencils, setup_.gravity, m.grid);
@@ -104,7 +107,13 @@ void MpmComponent::interpolate_to_grid(MpmMaterial& m, int step, const char* pha
 void MpmComponent::project_to_grid(MpmMaterial& m, int step, const char* phase) {
   interpolate_to_grid(m, step, phase);
   PhaseTimers::Scope t(phase_timers(), "MPM: compute internal force");
-  compute_internal_force(m.particles, m.stencils, m.grid);
+  internal_force(m);
+}
+
+// f_int,g (Alg. 6; with the hoop term when axisymmetric), summed over periodic aliases.
+void MpmComponent::internal_force(MpmMaterial& m) {
+  if (setup_.flags.axisymmetric) axisymmetric_internal_force(m.particles, m.stencils, m.grid);
+  else compute_internal_force(m.particles, m.stencils, m.grid);
   fold_internal_force(periodic_, m.grid);
 }
 
@@ -266,10 +275,7 @@ void MpmComponent::advance(double t, double dt, int step) {
   // 5. f_int,g = -sum V_p sigma_p grad S_gp with sigma, V at t_n (Alg. 6, eq. 1.70).
   {
     PhaseTimers::Scope timer(phase_timers(), "MPM: compute internal force");
-    for (MpmMaterial& m : mats) {
-      compute_internal_force(m.particles, m.stencils, m.grid);
-      fold_internal_force(periodic_, m.grid);
-    }
+    for (MpmMaterial& m : mats) internal_force(m);
     boundary_forces();
   }
   // 6. a_g = (f_int + f_ext)/m_g, v*_g = v_g + a_g dt (Alg. 7, eqs. 1.71-1.72).
@@ -309,7 +315,8 @@ void MpmComponent::advance(double t, double dt, int step) {
   {
     PhaseTimers::Scope timer(phase_timers(), "MPM: compute deformation gradient");
     for (MpmMaterial& m : mats) {
-      velocity_gradients(m.stencils, m.grid, m.L);
+      if (setup_.flags.axisymmetric) axisymmetric_velocity_gradients(m.stencils, m.grid, m.L);  // + v_r / r
+      else velocity_gradients(m.stencils, m.grid, m.L);
       Particles& p = m.particles;
       m.F_old = p.F;
       // <deformation_gradient algorithm>: first_order is eq. 1.75; the series

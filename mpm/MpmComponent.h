@@ -86,6 +86,7 @@ class MpmComponent final : public Component {
  private:
   double material_stable_timestep(const MpmMaterial& m) const;
   void project_to_grid(MpmMaterial& m, int step, const char* phase);
+  void internal_force(MpmMaterial& m);
   void interpolate_to_grid(MpmMaterial& m, int step, const char* phase);
   void exchange_momentum(ContactStage stage, double t, double dt);
   void boundary_forces();

@@ -127,6 +127,16 @@ std::unique_ptr<MpmComponent> make_mpm_component(const Deck& deck) {
   if (const DeckNode* archiver = root.child("DataArchiver"))
     for (const DeckNode* save : archiver->children_named("save"))
       if (save->attribute("label") == std::optional<std::string>("AccStrainEnergy")) setup.accumulate_strain_energy = true;
+  // Axisymmetric (mpm/Axisymmetric.h): x = r >= 0, one hoop cell in z, linear interpolation.
+  if (setup.flags.axisymmetric) {
+    const DeckNode& flag = root.require_child("MPM").require_child("axisymmetric");
+    if (setup.flags.interpolator.kind != InterpolatorKind::Linear)
+      flag.missing_feature("axisymmetric MPM with the '" + interpolator_name(setup.flags.interpolator.kind) +
+                           "' interpolator (implemented: linear)");
+    if (setup.grid.cells[2] != 1) flag.fail("axisymmetric MPM needs exactly one cell in z (the hoop direction)");
+    if (setup.grid.lower[0] < 0.0) flag.fail("axisymmetric MPM: x is the radius, the grid must start at x >= 0");
+    if ((setup.grid.periodic.array() != 0).any()) flag.missing_feature("axisymmetric MPM with periodic directions");
+  }
   // Periodic directions (mpm/PeriodicGrid.h): linear interpolation only.
   if ((setup.grid.periodic.array() != 0).any() && setup.flags.interpolator.kind != InterpolatorKind::Linear)
     grid_node.missing_feature("periodic MPM with the '" + interpolator_name(setup.flags.interpolator.kind) +

@@ -27,7 +27,6 @@ const char* const kNoEffect[] = {
 const std::map<std::string, std::string>& physics_defaults() {
   static const std::map<std::string, std::string> table = {
       {"time_integrator", "explicit"},
-      {"axisymmetric", "false"},
       {"artificial_damping_coeff", "0"},
       {"create_new_particles", "false"},
       {"manual_new_material", "false"},
@@ -122,6 +121,7 @@ MpmFlags parse_mpm_flags(const DeckNode* mpm) {
     if (c.name == "artificial_viscosity") { flags.artificial_viscosity = c.as_bool(); continue; }
     if (c.name == "artificial_viscosity_heating") { flags.artificial_viscosity_heating = c.as_bool(); continue; }
     if (c.name == "use_load_curves") { flags.use_load_curves = c.as_bool(); continue; }
+    if (c.name == "axisymmetric") { flags.axisymmetric = c.as_bool(); continue; }
     if (c.name == "use_prescribed_deformation" || c.name == "UsePrescribedDeformation") {
       flags.use_prescribed_deformation = c.as_bool();
       continue;

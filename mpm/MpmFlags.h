@@ -43,6 +43,8 @@ struct MpmFlags {
   // <use_prescribed_deformation> (Vaango also spells it UsePrescribedDeformation):
   // F follows <prescribed_deformation_file> (read in MpmDeck; mpm/PrescribedDeformation.h).
   bool use_prescribed_deformation = false;
+  // <axisymmetric>: x = r, y = z, one hoop cell (mpm/Axisymmetric.h); linear interpolation only.
+  bool axisymmetric = false;
   int deformation_gradient_terms = 1;
 };
 
