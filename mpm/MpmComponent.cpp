@@ -327,11 +327,12 @@ void MpmComponent::advance(double t, double dt, int step) {
     }
   }
   // 10. sigma_{n+1}, history (Alg. 11); the next step's dt from c(F_{n+1}) and v_n (before the particle update).
-  //     AccStrainEnergy += dt/2 [P(sigma_n) + P(sigma_{n+1})] (mpm/StrainWork.h).
+  //     AccStrainEnergy += sum V0 (P_n + P_{n+1})/2 : (F_{n+1} - F_n) (mpm/StrainWork.h).
   for (MpmMaterial& m : mats) {
-    if (setup_.accumulate_strain_energy) acc_strain_energy_ += 0.5 * dt * stress_power(m.particles, m.L);
+    const bool work = setup_.accumulate_strain_energy;
+    if (work) acc_strain_energy_ += 0.5 * piola_work(m.particles, m.F_old, m.F_old);  // sigma_n at F_n
     update_stress(m, step, dt);
-    if (setup_.accumulate_strain_energy) acc_strain_energy_ += 0.5 * dt * stress_power(m.particles, m.L);
+    if (work) acc_strain_energy_ += 0.5 * piola_work(m.particles, m.particles.F, m.F_old);  // sigma_{n+1} at F_{n+1}
     stable_dt_ = std::min(stable_dt_, material_stable_timestep(m));
   }
   // 13. G2P, FLIP: v_p += dt sum a_g S, x_p += dt sum v*_g S (Alg. 14, eq. 1.76).

@@ -1,13 +1,15 @@
 #include "mpm/StrainWork.h"
 
+#include <Eigen/LU>
+
 namespace tephra {
 
-double stress_power(const Particles& p, const std::vector<Mat3>& L) {
+double piola_work(const Particles& p, const std::vector<Mat3>& F_stress, const std::vector<Mat3>& F_old) {
   double sum = 0.0;
   for (std::size_t i = 0; i < p.size(); ++i) {
-    // sigma : sym(l) = sigma : l for symmetric sigma; symmetrise anyway.
-    const Mat3 d = 0.5 * (L[i] + L[i].transpose());
-    sum += p.volume[i] * p.stress[i].cwiseProduct(d).sum();
+    const Mat3& Fs = F_stress[i];
+    const Mat3 P = Fs.determinant() * p.stress[i] * Fs.inverse().transpose();
+    sum += p.volume0[i] * P.cwiseProduct(p.F[i] - F_old[i]).sum();
   }
   return sum;
 }

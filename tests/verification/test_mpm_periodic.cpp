@@ -7,10 +7,13 @@
 //     too, one cell): v(x, 0) = V0 sin(2 pi x / L) is the longest mode, of
 //     wavelength L, so its period is T = L / c, c = sqrt((K + 4G/3)/rho).
 //     The mode amplitude a(t) = sum m v_x sin(2 pi x/L) ~ cos(2 pi t / T): T is
-//     measured from its zero crossings at T/4 and 3T/4. The semi-discrete
-//     error of linear elements with lumped mass is dT/T = (kh)^2/24 + ...
-//     (omega_h = (2c/h) sin(kh/2)), second order in h: we check the error at
-//     32 cells (< 0.5 %) and the observed order between 16 and 32 cells.
+//     measured from its zero crossings at T/4 and 3T/4. The discrete period
+//     converges at second order in h (the semi-discrete error of linear
+//     elements with lumped mass is (kh)^2/24; MPM's projection and time
+//     stepping change the constant: observed 2.1 % at 16 cells, 0.52 % at 32).
+//     Checked: the observed order between 16 and 32 cells is 2 +- 0.3, and the
+//     Richardson extrapolation T_16,32 = (4 T_32 - T_16)/3 equals L/c within
+//     0.05 % (observed 6e-5): the period converges to L/c itself.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -125,7 +128,9 @@ TEST(MpmPeriodic, StandingWavePeriodIsLOverC) {
   std::printf("periodic bar: T/T_exact - 1 = %.3e (16 cells), %.3e (32 cells), observed order %.2f; "
               "lumped-mass FEM estimate (kh)^2/24 = %.3e, %.3e\n",
               e16, e32, order, std::pow(2 * M_PI / 16, 2) / 24, std::pow(2 * M_PI / 32, 2) / 24);
-  EXPECT_LT(std::abs(e32), 0.005);
+  const double extrapolated = (4 * e32 - e16) / 3;
+  std::printf("periodic bar: Richardson-extrapolated T/T_exact - 1 = %.3e\n", extrapolated);
+  EXPECT_LT(std::abs(extrapolated), 5e-4);
   EXPECT_NEAR(order, 2.0, 0.3);
 }
 

@@ -152,7 +152,7 @@ TEST(MpmPrescribedDriver, AccStrainEnergyConvergesToTheStoredEnergyAtSecondOrder
               "observed order %.2f\n", stored, error[0], error[1], error[2], order);
   EXPECT_GT(stored, 0.0);
   EXPECT_NEAR(order, 2.0, 0.2);
-  EXPECT_LT(error[2] / stored, 1e-3);
+  EXPECT_LT(error[2] / stored, 1e-4);  // observed 4.4e-5
 }
 
 // The deck side: the flag needs the file; other F algorithms are a MissingFeature.
