@@ -121,5 +121,17 @@ TEST(MpmPressureBar, StepPressureGivesStressMinusPBehindTheFront) {
   EXPECT_NEAR(r.front, -0.6 + c_exact * t2, 0.004);  // within one cell (h_x = 4 mm)
 }
 
+// The deck inputs/mpm/pressure_bar.ups (the same set-up) runs from the command
+// line: 30 steps, exit 0, the AccStrainEnergy reduction written.
+TEST(MpmPressureBar, InputDeckRunsFromTheCommandLine) {
+  const std::string out = test::scratch_dir("pressure_bar_cli");
+  std::string log;
+  const int rc = test::run_tephra(test::source_dir() + "/inputs/mpm/pressure_bar.ups --max-steps 30 --quiet --output " +
+                                      out + "/uda",
+                                  &log);
+  EXPECT_EQ(rc, 0) << log;
+  EXPECT_TRUE(std::ifstream(out + "/uda/AccStrainEnergy.dat").good()) << log;
+}
+
 }  // namespace
 }  // namespace tephra
