@@ -115,8 +115,15 @@ std::unique_ptr<MpmComponent> make_mpm_component(const Deck& deck) {
   setup.loads = parse_particle_loads(root.child("PhysicalBC"), setup.flags.use_load_curves);
   if (!setup.loads.empty() && !setup.flags.mms.empty())
     root.require_child("PhysicalBC").missing_feature("<PhysicalBC> loads together with <run_MMS_problem>");
+  // The loads flag particles by X = x - u, which a periodic wrap of x breaks;
+  // their areas are not per radian in axisymmetric runs.
+  if (!setup.loads.empty() && ((setup.grid.periodic.array() != 0).any() || setup.flags.axisymmetric))
+    root.require_child("PhysicalBC").missing_feature(std::string("<PhysicalBC> loads with ") +
+                                                     (setup.flags.axisymmetric ? "<axisymmetric>" : "<periodic>"));
   if (setup.flags.use_prescribed_deformation) {
     const DeckNode& mpm_flags = root.require_child("MPM");
+    if (setup.flags.axisymmetric)
+      mpm_flags.require_child("axisymmetric").missing_feature("axisymmetric MPM with a prescribed deformation");
     if (setup.flags.deformation_gradient != "first_order")
       mpm_flags.require_child("deformation_gradient")
           .missing_feature("a prescribed deformation with deformation_gradient algorithm '" +
@@ -169,6 +176,9 @@ std::unique_ptr<MpmComponent> make_mpm_component(const Deck& deck) {
   if (setup.materials.empty()) mpm.fail("<MaterialProperties><MPM> has no <material>");
   if ((setup.grid.periodic.array() != 0).any() && setup.contact && setup.materials.size() > 1)
     grid_node.missing_feature("periodic MPM with contact (normals across a periodic face)");
+  if (setup.flags.axisymmetric && setup.contact && setup.materials.size() > 1)
+    root.require_child("MPM").require_child("axisymmetric").missing_feature(
+        "axisymmetric MPM with contact (normals from the axisymmetric gradients)");
   for (MpmMaterial& m : setup.materials)
     m.bcs = parse_grid_boundary_conditions(grid_node.child("BoundaryConditions"), m.index);
   for (MpmMaterial& m : setup.materials)

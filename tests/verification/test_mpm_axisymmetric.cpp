@@ -99,5 +99,22 @@ TEST(MpmAxisymmetric, GimpIsAMissingFeature) {
   EXPECT_THROW(make_mpm_component(*deck), MissingFeature);
 }
 
+// Pressure loads (areas not per radian) and a prescribed deformation are not
+// combined with the axisymmetric step: exit 3.
+TEST(MpmAxisymmetric, LoadsAndPrescribedDeformationAreMissingFeatures) {
+  std::string loaded = axisymmetric_deck();
+  loaded.replace(loaded.find("<axisymmetric>"), 0, "<use_load_curves>true</use_load_curves>");
+  loaded.replace(loaded.find("</Uintah_specification>"), 0,
+                 "<PhysicalBC><MPM><pressure><geom_object><box><min>[1,0,0]</min><max>[1,0.125,0.03125]</max></box>"
+                 "</geom_object><load_curve><id>1</id><time_point><time>0</time><load>1</load></time_point>"
+                 "</load_curve></pressure></MPM></PhysicalBC>");
+  EXPECT_THROW(make_mpm_component(*load_deck_from_string(loaded, "axi_loaded.ups", ".")), MissingFeature);
+  std::string driven = axisymmetric_deck();
+  driven.replace(driven.find("<axisymmetric>"), 0,
+                 "<use_prescribed_deformation>true</use_prescribed_deformation>"
+                 "<prescribed_deformation_file>x.txt</prescribed_deformation_file>");
+  EXPECT_THROW(make_mpm_component(*load_deck_from_string(driven, "axi_driven.ups", ".")), MissingFeature);
+}
+
 }  // namespace
 }  // namespace tephra
