@@ -7,6 +7,7 @@
 #include "mpm/DeckModelParameters.h"
 #include "models/solid/CnhMms.h"
 #include "mpm/MpmComponent.h"
+#include "mpm/MpmDeckDrivers.h"
 #include "mpm/mms/ManufacturedSolution.h"
 
 namespace tephra {
@@ -111,43 +112,8 @@ std::unique_ptr<MpmComponent> make_mpm_component(const Deck& deck) {
   setup.grid = make_grid(grid_node);
 
   setup.flags = parse_mpm_flags(root.child("MPM"));
-  // <PhysicalBC><MPM>: pressure (with <use_load_curves>) and force loads (mpm/loads/ParticleLoads.h).
-  setup.loads = parse_particle_loads(root.child("PhysicalBC"), setup.flags.use_load_curves);
-  if (!setup.loads.empty() && !setup.flags.mms.empty())
-    root.require_child("PhysicalBC").missing_feature("<PhysicalBC> loads together with <run_MMS_problem>");
-  // The loads flag particles by X = x - u, which a periodic wrap of x breaks;
-  // their areas are not per radian in axisymmetric runs.
-  if (!setup.loads.empty() && ((setup.grid.periodic.array() != 0).any() || setup.flags.axisymmetric))
-    root.require_child("PhysicalBC").missing_feature(std::string("<PhysicalBC> loads with ") +
-                                                     (setup.flags.axisymmetric ? "<axisymmetric>" : "<periodic>"));
-  if (setup.flags.use_prescribed_deformation) {
-    const DeckNode& mpm_flags = root.require_child("MPM");
-    if (setup.flags.axisymmetric)
-      mpm_flags.require_child("axisymmetric").missing_feature("axisymmetric MPM with a prescribed deformation");
-    if (setup.flags.deformation_gradient != "first_order")
-      mpm_flags.require_child("deformation_gradient")
-          .missing_feature("a prescribed deformation with deformation_gradient algorithm '" +
-                           setup.flags.deformation_gradient + "' (implemented: first_order)");
-    setup.prescribed = read_prescribed_deformation(mpm_flags.require_child("prescribed_deformation_file"));
-  }
-  // AccStrainEnergy is summed every step only when the deck saves it.
-  if (const DeckNode* archiver = root.child("DataArchiver"))
-    for (const DeckNode* save : archiver->children_named("save"))
-      if (save->attribute("label") == std::optional<std::string>("AccStrainEnergy")) setup.accumulate_strain_energy = true;
-  // Axisymmetric (mpm/Axisymmetric.h): x = r >= 0, one hoop cell in z, linear interpolation.
-  if (setup.flags.axisymmetric) {
-    const DeckNode& flag = root.require_child("MPM").require_child("axisymmetric");
-    if (setup.flags.interpolator.kind != InterpolatorKind::Linear)
-      flag.missing_feature("axisymmetric MPM with the '" + interpolator_name(setup.flags.interpolator.kind) +
-                           "' interpolator (implemented: linear)");
-    if (setup.grid.cells[2] != 1) flag.fail("axisymmetric MPM needs exactly one cell in z (the hoop direction)");
-    if (setup.grid.lower[0] < 0.0) flag.fail("axisymmetric MPM: x is the radius, the grid must start at x >= 0");
-    if ((setup.grid.periodic.array() != 0).any()) flag.missing_feature("axisymmetric MPM with periodic directions");
-  }
-  // Periodic directions (mpm/PeriodicGrid.h): linear interpolation only.
-  if ((setup.grid.periodic.array() != 0).any() && setup.flags.interpolator.kind != InterpolatorKind::Linear)
-    grid_node.missing_feature("periodic MPM with the '" + interpolator_name(setup.flags.interpolator.kind) +
-                              "' interpolator (implemented: linear)");
+  // Loads, prescribed deformation, AccStrainEnergy, axisymmetric and periodic options (mpm/MpmDeckDrivers.cpp).
+  read_loads_and_drivers(deck, setup);
   // GIMP, CPDI and B-spline supports reach past the particle's cell: a
   // particle near a domain face weights the node layer of the extra cells.
   if (setup.flags.interpolator.kind != InterpolatorKind::Linear && (setup.grid.extra_cells.array() < 1).any())
@@ -174,11 +140,7 @@ std::unique_ptr<MpmComponent> make_mpm_component(const Deck& deck) {
     }
   }
   if (setup.materials.empty()) mpm.fail("<MaterialProperties><MPM> has no <material>");
-  if ((setup.grid.periodic.array() != 0).any() && setup.contact && setup.materials.size() > 1)
-    grid_node.missing_feature("periodic MPM with contact (normals across a periodic face)");
-  if (setup.flags.axisymmetric && setup.contact && setup.materials.size() > 1)
-    root.require_child("MPM").require_child("axisymmetric").missing_feature(
-        "axisymmetric MPM with contact (normals from the axisymmetric gradients)");
+  check_driver_combinations(deck, setup);
   for (MpmMaterial& m : setup.materials)
     m.bcs = parse_grid_boundary_conditions(grid_node.child("BoundaryConditions"), m.index);
   for (MpmMaterial& m : setup.materials)
