@@ -10,7 +10,9 @@
 #include "core/base/Errors.h"
 #include "core/base/PhaseTimers.h"
 #include "mpm/ArtificialViscosity.h"
+#include "mpm/Axisymmetric.h"
 #include "mpm/DeformationGradient.h"
+#include "mpm/StrainWork.h"
 #include "mpm/Transfers.h"
 #include "mpm/contact/ContactNormals.h"
 
@@ -26,6 +28,7 @@ MpmComponent::MpmComponent(MpmSetup setup) : setup_(std::move(setup)) {
     m.grid.extra = g.extra_cells;
     m.grid.reset();
   }
+  if (!setup_.materials.empty()) periodic_ = periodic_nodes(g, setup_.materials.front().grid);
   boundary_force_.fill(Vec3::Zero());
   boundary_area_.fill(0.0);
 }
@@ -35,6 +38,7 @@ void MpmComponent::initialize() {
   for (MpmMaterial& m : setup_.materials) {
     m.particles = Particles{};
     seed_particles(setup_.grid, m.sources, m.density, m.particles, next_id);
+    if (setup_.flags.axisymmetric) make_axisymmetric_particles(setup_.grid.dx, m.density, m.particles);  // per radian
     if (m.mms) initialize_mms_particles(*m.mms, m.particles);  // x = X + u(X,0), v, F at t = 0
     // The model's history columns at their declared initial values.
     m.particles.history.clear();
@@ -47,13 +51,15 @@ void MpmComponent::initialize() {
     m.F_old = m.particles.F;
     m.L.assign(m.particles.size(), Mat3::Zero());
     update_stress(m, 0, 0.0);  // sigma(F = I) = 0, and the initial wave speeds
-    project_to_grid(m, 0, "initialize");  // g.* fields of the initial state
   }
+  apply_loads(0.0);
+  for (MpmMaterial& m : setup_.materials) project_to_grid(m, 0, "initialize");  // g.* fields of the initial state
   // The first step's size from the initial state (Vaango: the constitutive
   // model's computeStableTimestep at initialization, c(F = I) and v_0).
   stable_dt_ = std::numeric_limits<double>::infinity();
   for (const MpmMaterial& m : setup_.materials) stable_dt_ = std::min(stable_dt_, material_stable_timestep(m));
   time_ = 0.0;
+  acc_strain_energy_ = 0.0;
 }
 
 // Vaango's explicit rule (UCNH::computeStressTensor, called by SerialMPM's
@@ -88,10 +94,12 @@ void MpmComponent::fail_particle(const MpmMaterial& m, std::size_t i, int step, 
 // Stencils + P2G (Alg. 5) on a reset grid, with the grid BCs on v_g.
 void MpmComponent::interpolate_to_grid(MpmMaterial& m, int step, const char* phase) {
   PhaseTimers::Scope t(phase_timers(), "MPM: interpolate particles to grid");
-  const long bad = compute_stencils(m.particles, m.grid, setup_.flags.interpolator, m.stencils);
+  const long bad = setup_.flags.axisymmetric ? compute_axisymmetric_stencils(m.particles, m.grid, m.stencils)
+                                             : compute_stencils(m.particles, m.grid, setup_.flags.interpolator, m.stencils);
   if (bad >= 0) fail_particle(m, std::size_t(bad), step, phase, "particle is outside the grid");
   m.grid.reset();
   particles_to_grid(m.particles, m.stencils, setup_.gravity, m.grid);
+  fold_particle_sums(periodic_, m.grid);  // periodic aliases share the sums
   m.bcs.apply(m.grid, m.grid.velocity);
 }
 
@@ -99,7 +107,14 @@ void MpmComponent::interpolate_to_grid(MpmMaterial& m, int step, const char* pha
 void MpmComponent::project_to_grid(MpmMaterial& m, int step, const char* phase) {
   interpolate_to_grid(m, step, phase);
   PhaseTimers::Scope t(phase_timers(), "MPM: compute internal force");
-  compute_internal_force(m.particles, m.stencils, m.grid);
+  internal_force(m);
+}
+
+// f_int,g (Alg. 6; with the hoop term when axisymmetric), summed over periodic aliases.
+void MpmComponent::internal_force(MpmMaterial& m) {
+  if (setup_.flags.axisymmetric) axisymmetric_internal_force(m.particles, m.stencils, m.grid);
+  else compute_internal_force(m.particles, m.stencils, m.grid);
+  fold_internal_force(periodic_, m.grid);
 }
 
 // sigma_{n+1}, c, W, history from (F_n, F_{n+1}, l, sigma_n) (Alg. 11); V_{n+1} = J V0 (Alg. 9).
@@ -217,6 +232,15 @@ void MpmComponent::boundary_forces() {
   }
 }
 
+// f_ext,p of every particle from the deck's <PhysicalBC> loads at time t (mpm/loads/).
+void MpmComponent::apply_loads(double t) {
+  if (setup_.loads.empty()) return;
+  PhaseTimers::Scope timer(phase_timers(), "MPM: apply external loads");
+  std::vector<Particles*> particles;
+  for (MpmMaterial& m : setup_.materials) particles.push_back(&m.particles);
+  apply_particle_loads(setup_.loads, t, setup_.grid.dx, particles);
+}
+
 // One explicit USL step of all materials, in the order of Algorithm 2 of the
 // Vaango theory manual (§1.9). Each phase runs over every material before the
 // next starts, so that contact sees the node values of all of them. With one
@@ -242,6 +266,8 @@ void MpmComponent::advance(double t, double dt, int step) {
       if (t == 0.0) set_mms_velocity(*m.mms, -0.5 * dt, m.particles);
       apply_mms_body_force(*m.mms, t, m.particles);
     }
+  //    <PhysicalBC> pressure and force loads at t_n with F_n (Vaango's applyExternalLoads).
+  apply_loads(t);
   // 1-3. Body force (gravity) and external loads enter P2G: m_g, V_g, v_g, f_ext,g (Alg. 5, eq. 1.69).
   for (MpmMaterial& m : mats) interpolate_to_grid(m, step, "interpolate particles to grid");
   // 4. Contact on the interpolated velocities v_g.
@@ -249,7 +275,7 @@ void MpmComponent::advance(double t, double dt, int step) {
   // 5. f_int,g = -sum V_p sigma_p grad S_gp with sigma, V at t_n (Alg. 6, eq. 1.70).
   {
     PhaseTimers::Scope timer(phase_timers(), "MPM: compute internal force");
-    for (MpmMaterial& m : mats) compute_internal_force(m.particles, m.stencils, m.grid);
+    for (MpmMaterial& m : mats) internal_force(m);
     boundary_forces();
   }
   // 6. a_g = (f_int + f_ext)/m_g, v*_g = v_g + a_g dt (Alg. 7, eqs. 1.71-1.72).
@@ -279,12 +305,18 @@ void MpmComponent::advance(double t, double dt, int step) {
       }
     }
   }
+  //    <use_prescribed_deformation>: v*_g = l x_g, so that F follows F*(t) (mpm/PrescribedDeformation.h).
+  if (setup_.prescribed) {
+    const Mat3 l = setup_.prescribed->step_velocity_gradient(t, dt);
+    for (MpmMaterial& m : mats) set_prescribed_grid_velocity(l, dt, m.grid);
+  }
   // 9. l_p = sum v*_g grad S^T, F_{n+1} = (I + dt l) F_n (Alg. 9, eqs. 1.73-1.75);
   //    F_n is kept as the model's input; a rigid material keeps F = I (VT eq. 3.1).
   {
     PhaseTimers::Scope timer(phase_timers(), "MPM: compute deformation gradient");
     for (MpmMaterial& m : mats) {
-      velocity_gradients(m.stencils, m.grid, m.L);
+      if (setup_.flags.axisymmetric) axisymmetric_velocity_gradients(m.stencils, m.grid, m.L);  // + v_r / r
+      else velocity_gradients(m.stencils, m.grid, m.L);
       Particles& p = m.particles;
       m.F_old = p.F;
       // <deformation_gradient algorithm>: first_order is eq. 1.75; the series
@@ -295,8 +327,12 @@ void MpmComponent::advance(double t, double dt, int step) {
     }
   }
   // 10. sigma_{n+1}, history (Alg. 11); the next step's dt from c(F_{n+1}) and v_n (before the particle update).
+  //     AccStrainEnergy += sum V0 (P_n + P_{n+1})/2 : (F_{n+1} - F_n) (mpm/StrainWork.h).
   for (MpmMaterial& m : mats) {
+    const bool work = setup_.accumulate_strain_energy;
+    if (work) acc_strain_energy_ += 0.5 * piola_work(m.particles, m.F_old, m.F_old);  // sigma_n at F_n
     update_stress(m, step, dt);
+    if (work) acc_strain_energy_ += 0.5 * piola_work(m.particles, m.particles.F, m.F_old);  // sigma_{n+1} at F_{n+1}
     stable_dt_ = std::min(stable_dt_, material_stable_timestep(m));
   }
   // 13. G2P, FLIP: v_p += dt sum a_g S, x_p += dt sum v*_g S (Alg. 14, eq. 1.76).
@@ -305,6 +341,7 @@ void MpmComponent::advance(double t, double dt, int step) {
     for (MpmMaterial& m : mats) {
       Particles& p = m.particles;
       grid_to_particles(m.stencils, m.grid, dt, p);
+      wrap_periodic_positions(setup_.grid, p);  // re-enter through the opposite periodic face
       for (std::size_t i = 0; i < p.size(); ++i) {
         if (!p.v[i].allFinite()) fail_particle(m, i, step, "interpolate to particles", "non-finite velocity");
         for (int d = 0; d < 3; ++d) {

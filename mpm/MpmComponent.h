@@ -6,6 +6,7 @@
 #include <array>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -15,9 +16,12 @@
 #include "mpm/GridBoundaryConditions.h"
 #include "mpm/MpmFlags.h"
 #include "mpm/NodeGrid.h"
+#include "mpm/PrescribedDeformation.h"
 #include "mpm/ParticleSeeding.h"
+#include "mpm/PeriodicGrid.h"
 #include "mpm/Particles.h"
 #include "mpm/contact/ContactModel.h"
+#include "mpm/loads/ParticleLoads.h"
 #include "mpm/mms/ManufacturedSolution.h"
 #include "mpm/shape/Interpolator.h"
 
@@ -52,6 +56,9 @@ struct MpmSetup {
   Vec3 gravity = Vec3::Zero();
   std::vector<MpmMaterial> materials;
   ContactModelP contact;  // nullptr: null contact (materials do not interact)
+  ParticleLoads loads;    // <PhysicalBC><MPM> pressure and force loads (mpm/loads/)
+  std::optional<PrescribedDeformation> prescribed;  // <use_prescribed_deformation>, or none
+  bool accumulate_strain_energy = false;  // the deck saves AccStrainEnergy (mpm/StrainWork.h)
 };
 
 class MpmComponent final : public Component {
@@ -79,9 +86,11 @@ class MpmComponent final : public Component {
  private:
   double material_stable_timestep(const MpmMaterial& m) const;
   void project_to_grid(MpmMaterial& m, int step, const char* phase);
+  void internal_force(MpmMaterial& m);
   void interpolate_to_grid(MpmMaterial& m, int step, const char* phase);
   void exchange_momentum(ContactStage stage, double t, double dt);
   void boundary_forces();
+  void apply_loads(double t);
   void update_stress(MpmMaterial& m, int step, double dt);
   void artificial_viscosity(MpmMaterial& m) const;
   [[noreturn]] void fail_particle(const MpmMaterial& m, std::size_t i, int step, const std::string& phase,
@@ -101,6 +110,10 @@ class MpmComponent final : public Component {
   // for the faces of MpmFlags::boundary_traction_faces; from the last step.
   std::array<Vec3, 6> boundary_force_{};
   std::array<double, 6> boundary_area_{};
+  // AccStrainEnergy: the work of the stresses summed over the steps (mpm/StrainWork.h).
+  double acc_strain_energy_ = 0.0;
+  // Node aliases of the periodic directions (inactive without <periodic>).
+  PeriodicNodes periodic_;
 };
 
 // Reads the MPM parts of the deck (<MPM>, <PhysicalConstants>, <MaterialProperties><MPM>,

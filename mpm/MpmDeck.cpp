@@ -7,6 +7,7 @@
 #include "mpm/DeckModelParameters.h"
 #include "models/solid/CnhMms.h"
 #include "mpm/MpmComponent.h"
+#include "mpm/MpmDeckDrivers.h"
 #include "mpm/mms/ManufacturedSolution.h"
 
 namespace tephra {
@@ -109,17 +110,10 @@ std::unique_ptr<MpmComponent> make_mpm_component(const Deck& deck) {
   MpmSetup setup;
   const DeckNode& grid_node = root.require_child("Grid");
   setup.grid = make_grid(grid_node);
-  if ((setup.grid.periodic.array() != 0).any()) grid_node.missing_feature("MPM with periodic boundaries");
 
   setup.flags = parse_mpm_flags(root.child("MPM"));
-  // Vaango applies the <PhysicalBC><MPM> loads (pressure, force, ...) only
-  // with <use_load_curves>; none is implemented yet.
-  if (setup.flags.use_load_curves)
-    if (const DeckNode* bc = root.child("PhysicalBC"))
-      if (const DeckNode* mpm_bc = bc->child("MPM"))
-        if (!mpm_bc->children.empty())
-          mpm_bc->children.front().missing_feature("MPM physical boundary condition <" +
-                                                   mpm_bc->children.front().name + "> (load curves)");
+  // Loads, prescribed deformation, AccStrainEnergy, axisymmetric and periodic options (mpm/MpmDeckDrivers.cpp).
+  read_loads_and_drivers(deck, setup);
   // GIMP, CPDI and B-spline supports reach past the particle's cell: a
   // particle near a domain face weights the node layer of the extra cells.
   if (setup.flags.interpolator.kind != InterpolatorKind::Linear && (setup.grid.extra_cells.array() < 1).any())
@@ -146,6 +140,7 @@ std::unique_ptr<MpmComponent> make_mpm_component(const Deck& deck) {
     }
   }
   if (setup.materials.empty()) mpm.fail("<MaterialProperties><MPM> has no <material>");
+  check_driver_combinations(deck, setup);
   for (MpmMaterial& m : setup.materials)
     m.bcs = parse_grid_boundary_conditions(grid_node.child("BoundaryConditions"), m.index);
   for (MpmMaterial& m : setup.materials)

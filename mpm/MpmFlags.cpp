@@ -27,9 +27,7 @@ const char* const kNoEffect[] = {
 const std::map<std::string, std::string>& physics_defaults() {
   static const std::map<std::string, std::string> table = {
       {"time_integrator", "explicit"},
-      {"axisymmetric", "false"},
       {"artificial_damping_coeff", "0"},
-      {"exactDeformation", "false"},
       {"create_new_particles", "false"},
       {"manual_new_material", "false"},
       {"DoImplicitHeatConduction", "false"},
@@ -37,7 +35,6 @@ const std::map<std::string, std::string>& physics_defaults() {
       {"DoPressureStabilization", "false"},
       {"UseGradientEnhancedVelocityProjection", "false"},
       {"initialize_stress_using_body_force", "false"},
-      {"UsePrescribedDeformation", "false"},
       {"InsertParticles", "false"},
       {"minimum_mass_for_acc", "0"},
       {"use_CBDI_boundary_condition", "false"},
@@ -124,6 +121,15 @@ MpmFlags parse_mpm_flags(const DeckNode* mpm) {
     if (c.name == "artificial_viscosity") { flags.artificial_viscosity = c.as_bool(); continue; }
     if (c.name == "artificial_viscosity_heating") { flags.artificial_viscosity_heating = c.as_bool(); continue; }
     if (c.name == "use_load_curves") { flags.use_load_curves = c.as_bool(); continue; }
+    if (c.name == "axisymmetric") { flags.axisymmetric = c.as_bool(); continue; }
+    if (c.name == "use_prescribed_deformation" || c.name == "UsePrescribedDeformation") {
+      flags.use_prescribed_deformation = c.as_bool();
+      continue;
+    }
+    // The file is read in make_mpm_component; the exact increment is always
+    // used (mpm/PrescribedDeformation.h), so <exact_deformation> has no effect.
+    if (c.name == "prescribed_deformation_file") continue;
+    if (c.name == "exact_deformation" || c.name == "exactDeformation") { c.as_bool(); continue; }
     if (c.name == "artificial_viscosity_coeff1" || c.name == "artificial_viscosity_coeff2") {
       const double a = c.as_double();
       if (!(a >= 0.0)) c.fail(c.name + " must be >= 0");

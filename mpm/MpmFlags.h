@@ -40,6 +40,11 @@ struct MpmFlags {
   // subcycling, taylor_series, cayley_hamilton with <num_terms> (Vaango's
   // default 1). See mpm/DeformationGradient.h.
   std::string deformation_gradient = "first_order";
+  // <use_prescribed_deformation> (Vaango also spells it UsePrescribedDeformation):
+  // F follows <prescribed_deformation_file> (read in MpmDeck; mpm/PrescribedDeformation.h).
+  bool use_prescribed_deformation = false;
+  // <axisymmetric>: x = r, y = z, one hoop cell (mpm/Axisymmetric.h); linear interpolation only.
+  bool axisymmetric = false;
   int deformation_gradient_terms = 1;
 };
 

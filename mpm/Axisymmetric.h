@@ -1,0 +1,40 @@
+#pragma once
+// Axisymmetric MPM (<MPM><axisymmetric>true), Vaango's convention: x = r
+// (radius, r >= 0), y = z (axial), and the third grid direction stands for
+// the hoop angle: one cell, whose two node planes share every weight. All
+// extensive quantities are per radian:
+//   V_p = A_p r_p (A_p = h_x h_y / (res_x res_y) the particle's area), m_p = rho V_p.
+// Linear (axisymmetric) shape functions (Vaango's AxiLinearInterpolator):
+//   S = N_x(r) N_y(z) / 2 on each of the two hoop planes,
+//   grad S = (dN_x/dr N_y / 2, N_x dN_y/dz / 2, S / r_p),
+// the third component carrying the hoop terms:
+//   hoop rate      l_thth = sum_g v_r,g S_gp / r_p = v_r / r       (l_rth = l_thr = l_zth = l_thz = 0)
+//   internal force f_r,g = - sum_p V_p (sigma_rr dS/dr + sigma_rz dS/dz + sigma_thth S / r_p)
+//                  f_z,g = - sum_p V_p (sigma_zr dS/dr + sigma_zz dS/dz),   f_th,g = 0
+// (the weak form of d sigma_rr/dr + d sigma_rz/dz + (sigma_rr - sigma_thth)/r = rho a_r
+// with dV = r dr dz per radian). The F update is the ordinary one with this l
+// (F_thth = r / R for the hoop stretch).
+#include <vector>
+
+#include "core/base/Types.h"
+#include "mpm/NodeGrid.h"
+#include "mpm/Particles.h"
+#include "mpm/shape/Interpolator.h"
+
+namespace tephra {
+
+// Turns freshly seeded particles (3-D volumes h_x h_y h_z / res) into
+// per-radian ones: V = (V_3d / dz_p) r, m = rho V; dz_p = h_z / res_z.
+void make_axisymmetric_particles(const Vec3& h, double density, Particles& p);
+
+// Width-8 stencils as above. Returns the first particle outside the grid (or
+// with r <= 0), or -1.
+long compute_axisymmetric_stencils(const Particles& p, const NodeGrid& g, Stencils& s);
+
+// f_int with the hoop term (overwrites nothing: adds into g.internal_force).
+void axisymmetric_internal_force(const Particles& p, const Stencils& s, NodeGrid& g);
+
+// l_p with the hoop rate l_thth = v_r / r.
+void axisymmetric_velocity_gradients(const Stencils& s, const NodeGrid& g, std::vector<Mat3>& L);
+
+}  // namespace tephra

@@ -1,0 +1,62 @@
+#include "mpm/MpmDeckDrivers.h"
+
+#include <optional>
+#include <string>
+
+#include "core/deck/DeckLoader.h"
+#include "core/deck/DeckNode.h"
+#include "mpm/MpmComponent.h"
+
+namespace tephra {
+
+void read_loads_and_drivers(const Deck& deck, MpmSetup& setup) {
+  const DeckNode& root = deck.root;
+  // <PhysicalBC><MPM>: pressure (with <use_load_curves>) and force loads (mpm/loads/ParticleLoads.h).
+  setup.loads = parse_particle_loads(root.child("PhysicalBC"), setup.flags.use_load_curves);
+  if (!setup.loads.empty() && !setup.flags.mms.empty())
+    root.require_child("PhysicalBC").missing_feature("<PhysicalBC> loads together with <run_MMS_problem>");
+  // The loads flag particles by X = x - u, which a periodic wrap of x breaks;
+  // their areas are not per radian in axisymmetric runs.
+  if (!setup.loads.empty() && ((setup.grid.periodic.array() != 0).any() || setup.flags.axisymmetric))
+    root.require_child("PhysicalBC").missing_feature(std::string("<PhysicalBC> loads with ") +
+                                                     (setup.flags.axisymmetric ? "<axisymmetric>" : "<periodic>"));
+  if (setup.flags.use_prescribed_deformation) {
+    const DeckNode& mpm_flags = root.require_child("MPM");
+    if (setup.flags.axisymmetric)
+      mpm_flags.require_child("axisymmetric").missing_feature("axisymmetric MPM with a prescribed deformation");
+    if (setup.flags.deformation_gradient != "first_order")
+      mpm_flags.require_child("deformation_gradient")
+          .missing_feature("a prescribed deformation with deformation_gradient algorithm '" +
+                           setup.flags.deformation_gradient + "' (implemented: first_order)");
+    setup.prescribed = read_prescribed_deformation(mpm_flags.require_child("prescribed_deformation_file"));
+  }
+  // AccStrainEnergy is summed every step only when the deck saves it.
+  if (const DeckNode* archiver = root.child("DataArchiver"))
+    for (const DeckNode* save : archiver->children_named("save"))
+      if (save->attribute("label") == std::optional<std::string>("AccStrainEnergy")) setup.accumulate_strain_energy = true;
+  // Axisymmetric (mpm/Axisymmetric.h): x = r >= 0, one hoop cell in z, linear interpolation.
+  if (setup.flags.axisymmetric) {
+    const DeckNode& flag = root.require_child("MPM").require_child("axisymmetric");
+    if (setup.flags.interpolator.kind != InterpolatorKind::Linear)
+      flag.missing_feature("axisymmetric MPM with the '" + interpolator_name(setup.flags.interpolator.kind) +
+                           "' interpolator (implemented: linear)");
+    if (setup.grid.cells[2] != 1) flag.fail("axisymmetric MPM needs exactly one cell in z (the hoop direction)");
+    if (setup.grid.lower[0] < 0.0) flag.fail("axisymmetric MPM: x is the radius, the grid must start at x >= 0");
+    if ((setup.grid.periodic.array() != 0).any()) flag.missing_feature("axisymmetric MPM with periodic directions");
+  }
+  // Periodic directions (mpm/PeriodicGrid.h): linear interpolation only.
+  if ((setup.grid.periodic.array() != 0).any() && setup.flags.interpolator.kind != InterpolatorKind::Linear)
+    root.require_child("Grid").missing_feature("periodic MPM with the '" + interpolator_name(setup.flags.interpolator.kind) +
+                              "' interpolator (implemented: linear)");
+}
+
+void check_driver_combinations(const Deck& deck, const MpmSetup& setup) {
+  const DeckNode& root = deck.root;
+  if ((setup.grid.periodic.array() != 0).any() && setup.contact && setup.materials.size() > 1)
+    root.require_child("Grid").missing_feature("periodic MPM with contact (normals across a periodic face)");
+  if (setup.flags.axisymmetric && setup.contact && setup.materials.size() > 1)
+    root.require_child("MPM").require_child("axisymmetric").missing_feature(
+        "axisymmetric MPM with contact (normals from the axisymmetric gradients)");
+}
+
+}  // namespace tephra

@@ -1,0 +1,73 @@
+#include "mpm/PeriodicGrid.h"
+
+#include <cmath>
+
+namespace tephra {
+
+namespace {
+
+// Sums `v` over each alias set and writes the sum back to every member.
+template <class T>
+void fold(const std::vector<std::size_t>& canonical, std::vector<T>& v, const T& zero) {
+  std::vector<T> sum(v.size(), zero);
+  for (std::size_t g = 0; g < v.size(); ++g) sum[canonical[g]] += v[g];
+  for (std::size_t g = 0; g < v.size(); ++g) v[g] = sum[canonical[g]];
+}
+
+}  // namespace
+
+PeriodicNodes periodic_nodes(const Grid& grid, const NodeGrid& g) {
+  PeriodicNodes map;
+  if ((grid.periodic.array() == 0).all()) return map;
+  map.canonical.resize(g.count());
+  for (int k = 0; k < g.n[2]; ++k)
+    for (int j = 0; j < g.n[1]; ++j)
+      for (int i = 0; i < g.n[0]; ++i) {
+        IntVec3 c(i, j, k);
+        for (int d = 0; d < 3; ++d)
+          if (grid.periodic[d]) {
+            const int N = grid.cells[d];
+            c[d] = g.extra[d] + (((c[d] - g.extra[d]) % N) + N) % N;
+          }
+        map.canonical[g.index(i, j, k)] = g.index(c);
+      }
+  return map;
+}
+
+void fold_particle_sums(const PeriodicNodes& map, NodeGrid& g) {
+  if (!map.active()) return;
+  // Back to extensive sums: momentum m v and V sigma.
+  for (std::size_t n = 0; n < g.count(); ++n) {
+    g.velocity[n] *= g.mass[n];
+    g.stress[n] *= g.volume[n];
+  }
+  fold(map.canonical, g.mass, 0.0);
+  fold(map.canonical, g.volume, 0.0);
+  fold(map.canonical, g.velocity, Vec3::Zero().eval());
+  fold(map.canonical, g.stress, Mat3::Zero().eval());
+  fold(map.canonical, g.external_force, Vec3::Zero().eval());
+  for (std::size_t n = 0; n < g.count(); ++n) {
+    if (g.mass[n] > 0.0) g.velocity[n] /= g.mass[n];
+    if (g.volume[n] > 0.0) g.stress[n] /= g.volume[n];
+  }
+}
+
+void fold_internal_force(const PeriodicNodes& map, NodeGrid& g) {
+  if (!map.active()) return;
+  fold(map.canonical, g.internal_force, Vec3::Zero().eval());
+}
+
+void wrap_periodic_positions(const Grid& grid, Particles& p) {
+  for (int d = 0; d < 3; ++d) {
+    if (!grid.periodic[d]) continue;
+    const double lo = grid.lower[d], L = grid.upper[d] - grid.lower[d];
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      double x = lo + std::fmod(p.x[i][d] - lo, L);
+      if (x < lo) x += L;
+      if (x >= lo + L) x -= L;  // fmod round-off at the upper face
+      p.x[i][d] = x;
+    }
+  }
+}
+
+}  // namespace tephra
