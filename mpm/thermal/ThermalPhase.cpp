@@ -1,0 +1,84 @@
+// MpmComponent's thermal phases (mpm/thermal/HeatConduction.h for the
+// equations): which materials conduct, the conduction and thermal-contact
+// rates on the grid, and the particle temperature update with the models'
+// internal heating.
+#include <algorithm>
+#include <limits>
+
+#include "core/base/PhaseTimers.h"
+#include "mpm/MpmComponent.h"
+#include "mpm/thermal/HeatConduction.h"
+
+namespace tephra {
+
+// The deck needs the grid temperature when a material conducts
+// (<do_explicit_heat_conduction>, Vaango's default true, and k > 0) or when
+// <thermal_contact/> couples two or more materials.
+bool MpmComponent::thermal_grid_needed() const {
+  if (setup_.thermal_contact && setup_.materials.size() > 1) return true;
+  if (!setup_.flags.explicit_heat_conduction) return false;
+  for (const MpmMaterial& m : setup_.materials)
+    if (m.thermal_conductivity > 0.0) return true;
+  return false;
+}
+
+// Forward-Euler limit of the conduction step (conduction_stable_timestep),
+// over the conducting materials at their reference density.
+double MpmComponent::thermal_stable_timestep() const {
+  double dt = std::numeric_limits<double>::infinity();
+  if (!thermal_grid_needed() || !setup_.flags.explicit_heat_conduction) return dt;
+  for (const MpmMaterial& m : setup_.materials)
+    if (m.thermal_conductivity > 0.0)
+      dt = std::min(dt, conduction_stable_timestep(m.thermal_conductivity / (m.density * m.specific_heat),
+                                                   setup_.grid.dx));
+  return dt;
+}
+
+// After P2G of step n: the node temperatures of the particle state at t_n and
+// their rates (conduction of each material, then thermal contact). Skipped on
+// a step where every particle of every material has the same temperature: a
+// uniform T_g has zero gradient and all materials share it, so both rates are
+// zero (up to the round-off of the mass-weighted average) and there is
+// nothing to conduct.
+void MpmComponent::compute_heat_rates(double dt) {
+  conducting_ = false;
+  if (!thermal_grid_needed()) return;
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  for (const MpmMaterial& m : setup_.materials)
+    for (double T : m.particles.temperature) {
+      lo = std::min(lo, T);
+      hi = std::max(hi, T);
+    }
+  if (!(hi > lo)) return;
+  conducting_ = true;
+  PhaseTimers::Scope timer(phase_timers(), "MPM: heat conduction");
+  auto& mats = setup_.materials;
+  for (MpmMaterial& m : mats) {
+    temperature_to_grid(m.particles, m.stencils, m.grid, m.thermal);
+    if (setup_.flags.explicit_heat_conduction && m.thermal_conductivity > 0.0)
+      add_conduction_rate(m.particles, m.stencils, m.grid, m.thermal_conductivity, m.specific_heat, m.thermal);
+  }
+  if (setup_.thermal_contact && mats.size() > 1) {
+    std::vector<const NodeGrid*> grids;
+    std::vector<double> cv;
+    std::vector<ThermalNodes*> thermal;
+    for (MpmMaterial& m : mats) {
+      grids.push_back(&m.grid);
+      cv.push_back(m.specific_heat);
+      thermal.push_back(&m.thermal);
+    }
+    add_thermal_contact_rate(grids, cv, dt, thermal);
+  }
+}
+
+// G2P of the temperature: T_{n+1} = T_n + dt (sum_g rate_g S_gp + hdot_p),
+// hdot_p the model's heating rate of the step (adiabatic plastic work, and
+// the artificial-viscosity heating when the deck asks for it).
+void MpmComponent::update_temperatures(MpmMaterial& m, double dt) {
+  Particles& p = m.particles;
+  if (conducting_) temperature_rate_to_particles(m.stencils, m.thermal, dt, p);
+  const std::size_t n = std::min(p.size(), m.heating.size());
+  for (std::size_t i = 0; i < n; ++i) p.temperature[i] += dt * m.heating[i];
+}
+
+}  // namespace tephra

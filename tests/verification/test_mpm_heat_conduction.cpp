@@ -1,0 +1,188 @@
+// Explicit MPM heat conduction and thermal contact (mpm/thermal/HeatConduction.h)
+// against closed forms:
+//  * 1-D transient conduction in an insulated bar, the decaying cosine mode
+//      T(x, t) = T0 + A cos(pi x / L) exp(-alpha pi^2 t / L^2),  alpha = k/(rho c_v),
+//    which satisfies dT/dt = alpha d2T/dx2 and dT/dx = 0 at x = 0, L; observed
+//    order of the particle L2 error over three resolutions (the lumped-mass
+//    linear-element Laplacian has eigenvalue (4 alpha/h^2) sin^2(pi h/2L) =
+//    alpha (pi/L)^2 (1 - (pi h/L)^2/12 + ...), and dt ~ h^2, so order 2);
+//  * ThermalEnergy = sum m c_v T conserved to round-off with insulated ends;
+//  * two materials in thermal contact reach the heat-capacity-weighted mean
+//      T_eq = (m_A c_A T_A + m_B c_B T_B) / (m_A c_A + m_B c_B).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+
+#include "core/base/PhaseTimers.h"
+#include "core/geometry/Primitives.h"
+#include "models/solid/CompNeoHookean.h"
+#include "mpm/MpmComponent.h"
+
+namespace tephra {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// A bar [0, 1] x [0, h] x [0, h] of N x 1 x 1 cells, 2x2x2 particles per cell,
+// soft enough that the mechanical step never limits (all motion is zero anyway:
+// no load, stress-free). Material regions: [x0, x1) per entry of `parts`.
+struct Part {
+  double x0, x1, density, specific_heat, conductivity, temperature;
+};
+
+MpmSetup bar_setup(int N, const std::vector<Part>& parts) {
+  MpmSetup s;
+  const double h = 1.0 / N;
+  s.grid.lower = Vec3::Zero();
+  s.grid.upper = Vec3(1.0, h, h);
+  s.grid.cells = IntVec3(N, 1, 1);
+  s.grid.dx = Vec3::Constant(h);
+  s.grid.patches.push_back(Patch{0, IntVec3::Zero(), s.grid.cells});
+  for (const Part& part : parts) {
+    MpmMaterial m;
+    m.index = int(s.materials.size());
+    m.density = part.density;
+    m.specific_heat = part.specific_heat;
+    m.thermal_conductivity = part.conductivity;
+    m.model = std::make_shared<CompNeoHookean>(CompNeoHookeanParams{1e-3, 1e-3});
+    ParticleSource src;
+    src.piece = std::make_shared<BoxPiece>(Vec3(part.x0, 0, 0), Vec3(part.x1, h, h));
+    src.res = IntVec3::Constant(2);
+    src.velocity = Vec3::Zero();
+    src.temperature = part.temperature;
+    m.sources.push_back(src);
+    s.materials.push_back(std::move(m));
+  }
+  return s;
+}
+
+// Runs to t_end with the component's stable step (x 0.9).
+void run_to(MpmComponent& c, double t_end) {
+  double t = 0.0;
+  int step = 0;
+  while (t < t_end) {
+    const double dt = std::min(0.9 * c.stable_timestep(), t_end - t);
+    c.advance(t, dt, ++step);
+    t += dt;
+  }
+}
+
+long long phase_calls(const std::string& name) {
+  for (const auto& e : phase_timers().entries())
+    if (e.name == name) return e.calls;
+  return 0;
+}
+
+struct ModeResult {
+  double error = 0;          // sqrt(sum V0 (T_p - T_exact)^2 / sum V0) / A
+  double energy_drift = 0;   // |E(t_end) - E(0)| / E(0)
+};
+
+ModeResult cosine_mode(int N) {
+  const double rho = 1.0, cv = 1.0, alpha = 0.1, T0 = 300.0, A = 10.0, t_end = 1.0;
+  MpmComponent c(bar_setup(N, {{0.0, 1.0, rho, cv, alpha * rho * cv, T0}}));
+  c.initialize();
+  Particles& p = c.materials()[0].particles;
+  for (std::size_t i = 0; i < p.size(); ++i) p.temperature[i] = T0 + A * std::cos(kPi * p.x[i][0]);
+  const double E0 = c.reductions({"ThermalEnergy"}).at("ThermalEnergy")[0];
+  run_to(c, t_end);
+  const double E1 = c.reductions({"ThermalEnergy"}).at("ThermalEnergy")[0];
+  double e2 = 0, v = 0;
+  const double decay = std::exp(-alpha * kPi * kPi * t_end);
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const double exact = T0 + A * std::cos(kPi * p.x[i][0]) * decay;
+    e2 += p.volume0[i] * std::pow(p.temperature[i] - exact, 2);
+    v += p.volume0[i];
+  }
+  return {std::sqrt(e2 / v) / A, std::abs(E1 - E0) / E0};
+}
+
+TEST(MpmHeatConduction, DecayingCosineModeConvergesAtSecondOrder) {
+  const int N[3] = {8, 16, 32};
+  ModeResult r[3];
+  for (int k = 0; k < 3; ++k) r[k] = cosine_mode(N[k]);
+  for (int k = 0; k < 3; ++k) std::printf("conduction N = %d: L2 error / A = %.3e, energy drift %.1e\n", N[k], r[k].error, r[k].energy_drift);
+  const double order1 = std::log2(r[0].error / r[1].error), order2 = std::log2(r[1].error / r[2].error);
+  std::printf("conduction: observed order %.3f (8->16), %.3f (16->32)\n", order1, order2);
+  RecordProperty("order_16_32", std::to_string(order2));
+  EXPECT_GT(order1, 1.8);
+  EXPECT_GT(order2, 1.8);
+  // The amplitude at t_end is exp(-pi^2 0.1) = 0.37 of A: the coarsest error
+  // must already be a small fraction of it.
+  EXPECT_LT(r[0].error, 0.02);
+  // Insulated ends: sum m c_v T is conserved to round-off (E ~ 300 m c_v).
+  for (const ModeResult& x : r) EXPECT_LT(x.energy_drift, 1e-13);
+}
+
+TEST(MpmHeatConduction, TwoMaterialsInThermalContactReachTheCapacityWeightedMean) {
+  // A on [0, 0.5) (rho c = 2), B on [0.5, 1] (rho c = 1): equal volumes, so
+  // T_eq = (2 * 400 + 1 * 250) / 3 = 350 K. Conductivities give alpha = 0.1
+  // in both; decay of the slowest mode ~ exp(-alpha pi^2 t), t = 15 gives
+  // ~1e-6 of the initial 150 K spread.
+  MpmSetup s = bar_setup(16, {{0.0, 0.5, 2.0, 1.0, 0.2, 400.0}, {0.5, 1.0, 1.0, 1.0, 0.1, 250.0}});
+  s.thermal_contact = true;
+  MpmComponent c(std::move(s));
+  c.initialize();
+  const double E0 = c.reductions({"ThermalEnergy"}).at("ThermalEnergy")[0];
+  run_to(c, 15.0);
+  const double T_eq = (2.0 * 400.0 + 1.0 * 250.0) / 3.0;
+  double worst = 0;
+  for (const MpmMaterial& m : c.materials())
+    for (double T : m.particles.temperature) worst = std::max(worst, std::abs(T - T_eq));
+  std::printf("thermal contact: max |T - T_eq| = %.3e K after t = 15\n", worst);
+  EXPECT_LT(worst, 1e-3);
+  const double E1 = c.reductions({"ThermalEnergy"}).at("ThermalEnergy")[0];
+  EXPECT_NEAR(E1 / E0, 1.0, 1e-13);
+}
+
+TEST(MpmHeatConduction, ThermalContactWithoutConductionEquilibratesOverlappingMaterialsInOneStep) {
+  // Both materials fill the whole bar, k = 0: each node's T_c is
+  // (rho_A c_A T_A + rho_B c_B T_B)/(rho_A c_A + rho_B c_B) (the node masses
+  // are rho V_g of each), and G2P adds S-weighted (T_c - T_m) with sum S = 1,
+  // so after one step every particle sits at T_c = (3*300 + 1*500)/4 = 350 K.
+  MpmSetup s = bar_setup(4, {{0.0, 1.0, 3.0, 1.0, 0.0, 300.0}, {0.0, 1.0, 1.0, 1.0, 0.0, 500.0}});
+  s.thermal_contact = true;
+  MpmComponent c(std::move(s));
+  c.initialize();
+  c.advance(0.0, 1e-3, 1);
+  for (const MpmMaterial& m : c.materials())
+    for (double T : m.particles.temperature) EXPECT_NEAR(T, 350.0, 1e-12);
+}
+
+TEST(MpmHeatConduction, NoConductionPhaseWithoutConductivityOrWithUniformTemperature) {
+  const std::string phase = "MPM: heat conduction";
+  // k = 0 and no thermal contact: the phase never runs, T stays.
+  {
+    MpmComponent c(bar_setup(4, {{0.0, 1.0, 1.0, 1.0, 0.0, 300.0}}));
+    c.initialize();
+    c.materials()[0].particles.temperature[0] = 400.0;
+    const long long before = phase_calls(phase);
+    c.advance(0.0, 1e-3, 1);
+    EXPECT_EQ(phase_calls(phase), before);
+    EXPECT_EQ(c.materials()[0].particles.temperature[0], 400.0);
+  }
+  // k > 0, uniform T: nothing to conduct; the phase is skipped.
+  {
+    MpmComponent c(bar_setup(4, {{0.0, 1.0, 1.0, 1.0, 1.0, 300.0}}));
+    c.initialize();
+    const long long before = phase_calls(phase);
+    c.advance(0.0, 1e-3, 1);
+    EXPECT_EQ(phase_calls(phase), before);
+    for (double T : c.materials()[0].particles.temperature) EXPECT_EQ(T, 300.0);
+  }
+  // <do_explicit_heat_conduction>false: k > 0 and a gradient, still no phase.
+  {
+    MpmSetup s = bar_setup(4, {{0.0, 1.0, 1.0, 1.0, 1.0, 300.0}});
+    s.flags.explicit_heat_conduction = false;
+    MpmComponent c(std::move(s));
+    c.initialize();
+    c.materials()[0].particles.temperature[0] = 400.0;
+    const long long before = phase_calls(phase);
+    c.advance(0.0, 1e-3, 1);
+    EXPECT_EQ(phase_calls(phase), before);
+  }
+}
+
+}  // namespace
+}  // namespace tephra
