@@ -15,6 +15,7 @@
 #include <cstdio>
 
 #include "core/base/PhaseTimers.h"
+#include "core/deck/DeckLoader.h"
 #include "core/geometry/Primitives.h"
 #include "models/solid/CompNeoHookean.h"
 #include "mpm/MpmComponent.h"
@@ -131,7 +132,7 @@ TEST(MpmHeatConduction, TwoMaterialsInThermalContactReachTheCapacityWeightedMean
   for (const MpmMaterial& m : c.materials())
     for (double T : m.particles.temperature) worst = std::max(worst, std::abs(T - T_eq));
   std::printf("thermal contact: max |T - T_eq| = %.3e K after t = 15\n", worst);
-  EXPECT_LT(worst, 1e-3);
+  EXPECT_LT(worst, 5e-4);  // observed 1.5e-4 K
   const double E1 = c.reductions({"ThermalEnergy"}).at("ThermalEnergy")[0];
   EXPECT_NEAR(E1 / E0, 1.0, 1e-13);
 }
@@ -148,6 +149,33 @@ TEST(MpmHeatConduction, ThermalContactWithoutConductionEquilibratesOverlappingMa
   c.advance(0.0, 1e-3, 1);
   for (const MpmMaterial& m : c.materials())
     for (double T : m.particles.temperature) EXPECT_NEAR(T, 350.0, 1e-12);
+}
+
+// The same through the deck reader: <thermal_contact/> in <MaterialProperties><MPM>.
+TEST(MpmHeatConduction, ThermalContactFromTheDeck) {
+  auto material = [](double rho, double T) {
+    return "<material><density>" + std::to_string(rho) +
+           "</density><constitutive_model type='comp_neo_hook'><bulk_modulus>1</bulk_modulus>"
+           "<shear_modulus>1</shear_modulus></constitutive_model><thermal_conductivity>0</thermal_conductivity>"
+           "<specific_heat>1</specific_heat><geom_object><box><min>[0,0,0]</min><max>[1,0.25,0.25]</max></box>"
+           "<res>[2,2,2]</res><velocity>[0,0,0]</velocity><temperature>" +
+           std::to_string(T) + "</temperature></geom_object></material>";
+  };
+  for (bool contact : {false, true}) {
+    const std::string text =
+        "<Uintah_specification><MaterialProperties><MPM>" + material(3.0, 300.0) + material(1.0, 500.0) +
+        (contact ? "<thermal_contact/>" : "") +
+        "</MPM></MaterialProperties><Grid><Level><Box><lower>[0,0,0]</lower><upper>[1,0.25,0.25]</upper>"
+        "<resolution>[4,1,1]</resolution><extraCells>[0,0,0]</extraCells><patches>[1,1,1]</patches></Box></Level>"
+        "</Grid></Uintah_specification>";
+    auto deck = load_deck_from_string(text, "contact.ups", ".");
+    auto c = make_mpm_component(*deck);
+    c->initialize();
+    c->advance(0.0, 1e-3, 1);
+    // With contact: (3*300 + 1*500)/4 = 350 K; without: each keeps its own.
+    for (const MpmMaterial& m : c->materials())
+      for (double T : m.particles.temperature) EXPECT_NEAR(T, contact ? 350.0 : (m.index == 0 ? 300.0 : 500.0), 1e-12);
+  }
 }
 
 TEST(MpmHeatConduction, NoConductionPhaseWithoutConductivityOrWithUniformTemperature) {
