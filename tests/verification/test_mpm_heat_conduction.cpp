@@ -32,8 +32,11 @@ struct Part {
   double x0, x1, density, specific_heat, conductivity, temperature;
 };
 
-MpmSetup bar_setup(int N, const std::vector<Part>& parts) {
+MpmSetup bar_setup(int N, const std::vector<Part>& parts, InterpolatorKind shape = InterpolatorKind::Linear) {
   MpmSetup s;
+  s.flags.interpolator.kind = shape;
+  // GIMP's support reaches the node layer outside the domain.
+  if (shape != InterpolatorKind::Linear) s.grid.extra_cells = IntVec3::Ones();
   const double h = 1.0 / N;
   s.grid.lower = Vec3::Zero();
   s.grid.upper = Vec3(1.0, h, h);
@@ -53,6 +56,7 @@ MpmSetup bar_setup(int N, const std::vector<Part>& parts) {
     src.velocity = Vec3::Zero();
     src.temperature = part.temperature;
     m.sources.push_back(src);
+    m.bcs.set_extra_nodes = shape != InterpolatorKind::Linear;
     s.materials.push_back(std::move(m));
   }
   return s;
@@ -77,26 +81,31 @@ long long phase_calls(const std::string& name) {
 
 struct ModeResult {
   double error = 0;          // sqrt(sum V0 (T_p - T_exact)^2 / sum V0) / A
+  double interior_error = 0; // the same over the particles in [0.25, 0.75]
   double energy_drift = 0;   // |E(t_end) - E(0)| / E(0)
 };
 
-ModeResult cosine_mode(int N) {
+ModeResult cosine_mode(int N, InterpolatorKind shape = InterpolatorKind::Linear) {
   const double rho = 1.0, cv = 1.0, alpha = 0.1, T0 = 300.0, A = 10.0, t_end = 1.0;
-  MpmComponent c(bar_setup(N, {{0.0, 1.0, rho, cv, alpha * rho * cv, T0}}));
+  MpmComponent c(bar_setup(N, {{0.0, 1.0, rho, cv, alpha * rho * cv, T0}}, shape));
   c.initialize();
   Particles& p = c.materials()[0].particles;
   for (std::size_t i = 0; i < p.size(); ++i) p.temperature[i] = T0 + A * std::cos(kPi * p.x[i][0]);
   const double E0 = c.reductions({"ThermalEnergy"}).at("ThermalEnergy")[0];
   run_to(c, t_end);
   const double E1 = c.reductions({"ThermalEnergy"}).at("ThermalEnergy")[0];
-  double e2 = 0, v = 0;
+  double e2 = 0, v = 0, e2_in = 0, v_in = 0;
   const double decay = std::exp(-alpha * kPi * kPi * t_end);
   for (std::size_t i = 0; i < p.size(); ++i) {
     const double exact = T0 + A * std::cos(kPi * p.x[i][0]) * decay;
     e2 += p.volume0[i] * std::pow(p.temperature[i] - exact, 2);
     v += p.volume0[i];
+    if (p.x[i][0] > 0.25 && p.x[i][0] < 0.75) {
+      e2_in += p.volume0[i] * std::pow(p.temperature[i] - exact, 2);
+      v_in += p.volume0[i];
+    }
   }
-  return {std::sqrt(e2 / v) / A, std::abs(E1 - E0) / E0};
+  return {std::sqrt(e2 / v) / A, std::sqrt(e2_in / v_in) / A, std::abs(E1 - E0) / E0};
 }
 
 TEST(MpmHeatConduction, DecayingCosineModeConvergesAtSecondOrder) {
@@ -113,6 +122,32 @@ TEST(MpmHeatConduction, DecayingCosineModeConvergesAtSecondOrder) {
   // must already be a small fraction of it.
   EXPECT_LT(r[0].error, 0.02);
   // Insulated ends: sum m c_v T is conserved to round-off (E ~ 300 m c_v).
+  for (const ModeResult& x : r) EXPECT_LT(x.energy_drift, 1e-13);
+}
+
+TEST(MpmHeatConduction, DecayingCosineModeWithQuadraticBsplines) {
+  // The same mode with <interpolator>3rdorderBS (the conduction uses the
+  // run's stencils; GIMP and CPDI give exactly the linear weights at the
+  // seeded quarter-cell positions of resting particles, B-splines do not).
+  // The support reaches the extra-cell node layer, which carries mass and
+  // takes part in the conduction, so the faces stay flux-free and the energy
+  // is conserved to round-off. Away from the faces (particles in [0.25, 0.75])
+  // the error converges at second order (measured 1.90, 2.00, 2.00 up to 64
+  // cells); next to the faces the truncated B-spline basis (no boundary-
+  // modified splines, the same limitation that keeps the B-spline MMS test
+  // disabled) converges more slowly, so the whole-bar L2 order falls
+  // (1.99, 1.70, 1.33 up to 64 cells): only the interior order is asserted.
+  const int N[3] = {8, 16, 32};
+  ModeResult r[3];
+  for (int k = 0; k < 3; ++k) r[k] = cosine_mode(N[k], InterpolatorKind::QuadraticBspline);
+  const double order1 = std::log2(r[0].interior_error / r[1].interior_error);
+  const double order2 = std::log2(r[1].interior_error / r[2].interior_error);
+  std::printf("conduction (3rdorderBS): interior L2 error / A = %.3e %.3e %.3e, observed order %.3f %.3f; "
+              "whole bar %.3e %.3e %.3e\n",
+              r[0].interior_error, r[1].interior_error, r[2].interior_error, order1, order2, r[0].error, r[1].error,
+              r[2].error);
+  EXPECT_GT(order1, 1.8);
+  EXPECT_GT(order2, 1.8);
   for (const ModeResult& x : r) EXPECT_LT(x.energy_drift, 1e-13);
 }
 
