@@ -179,6 +179,13 @@ MpmFlags parse_mpm_flags(const DeckNode* mpm) {
       c.missing_feature("MPM flag <" + c.name + "> = '" + c.text + "' (only the default '" + it->second +
                         "' is implemented)");
   }
+  // Vaango (MPMFlags::readMPMFlags): <artificial_viscosity>true turns the
+  // heating on unless <artificial_viscosity_heating> says otherwise, and
+  // heating without the viscosity is an input error.
+  const DeckNode* heating = mpm->child("artificial_viscosity_heating");
+  if (!heating) flags.artificial_viscosity_heating = flags.artificial_viscosity;
+  else if (flags.artificial_viscosity_heating && !flags.artificial_viscosity)
+    heating->fail("artificial_viscosity_heating needs <artificial_viscosity>true");
   return flags;
 }
 

@@ -31,7 +31,8 @@ struct MpmFlags {
   bool artificial_viscosity = false;
   double artificial_viscosity_coeff1 = 0.2;
   double artificial_viscosity_coeff2 = 2.0;
-  // <artificial_viscosity_heating>: adds -q tr D / (rho c_v) to the particle
+  // <artificial_viscosity_heating> (Vaango's default: the value of
+  // <artificial_viscosity>): adds -q tr D / (rho c_v) to the particle
   // heating rate dT/dt (Vaango's include_AV_heating).
   bool artificial_viscosity_heating = false;
   // <do_explicit_heat_conduction> (Vaango's default true): materials with

@@ -68,6 +68,18 @@ TEST(MpmDeckParsing, ThermalDampingDeletionErosionAndStabilizationFlags) {
   EXPECT_TRUE(f.delete_rogue_particles);
   EXPECT_EQ(f.erosion, ErosionAlgorithm::AllowNoTension);
   EXPECT_TRUE(f.pressure_stabilization);
+  // Vaango: artificial viscosity implies its heating unless the deck says no;
+  // heating without the viscosity is an error.
+  EXPECT_TRUE(parse_mpm_flags(deck("<MPM><artificial_viscosity>true</artificial_viscosity></MPM>")->root.child("MPM"))
+                  .artificial_viscosity_heating);
+  EXPECT_FALSE(parse_mpm_flags(deck("<MPM><artificial_viscosity>true</artificial_viscosity>"
+                                    "<artificial_viscosity_heating>false</artificial_viscosity_heating></MPM>")
+                                   ->root.child("MPM"))
+                   .artificial_viscosity_heating);
+  EXPECT_THROW(
+      parse_mpm_flags(
+          deck("<MPM><artificial_viscosity_heating>true</artificial_viscosity_heating></MPM>")->root.child("MPM")),
+      DeckError);
   EXPECT_THROW(parse_mpm_flags(deck("<MPM><artificial_damping_coeff>-1</artificial_damping_coeff></MPM>")->root.child("MPM")),
                DeckError);
   EXPECT_THROW(parse_mpm_flags(deck("<MPM><minimum_particle_mass>0</minimum_particle_mass></MPM>")->root.child("MPM")),
