@@ -8,17 +8,19 @@
 #include "core/base/PhaseTimers.h"
 #include "mpm/MpmComponent.h"
 #include "mpm/thermal/HeatConduction.h"
+#include "mpm/thermal/TemperatureBoundary.h"
 
 namespace tephra {
 
 // The deck needs the grid temperature when a material conducts
-// (<do_explicit_heat_conduction>, Vaango's default true, and k > 0) or when
-// <thermal_contact/> couples two or more materials.
+// (<do_explicit_heat_conduction>, Vaango's default true, and k > 0), when a
+// face holds a Dirichlet temperature (with conduction on; Vaango applies it
+// whatever k is), or when <thermal_contact/> couples two or more materials.
 bool MpmComponent::thermal_grid_needed() const {
   if (setup_.thermal_contact && setup_.materials.size() > 1) return true;
   if (!setup_.flags.explicit_heat_conduction) return false;
   for (const MpmMaterial& m : setup_.materials)
-    if (m.thermal_conductivity > 0.0) return true;
+    if (m.thermal_conductivity > 0.0 || has_temperature_bcs(m.bcs)) return true;
   return false;
 }
 
@@ -35,26 +37,36 @@ double MpmComponent::thermal_stable_timestep() const {
 }
 
 // After P2G of step n: the node temperatures of the particle state at t_n and
-// their rates (conduction of each material, then thermal contact). Skipped on
-// a step where every particle of every material has the same temperature: a
-// uniform T_g has zero gradient and all materials share it, so both rates are
-// zero (up to the round-off of the mass-weighted average) and there is
-// nothing to conduct.
+// their rates (conduction of each material, then thermal contact, then the
+// Dirichlet faces, mpm/thermal/TemperatureBoundary.h). Skipped on a step where
+// every particle of every material and every Dirichlet face have the same
+// temperature: a uniform T_g has zero gradient and all materials share it, so
+// all rates are zero (up to the round-off of the mass-weighted average) and
+// there is nothing to conduct.
 void MpmComponent::compute_heat_rates(double dt) {
   conducting_ = false;
   if (!thermal_grid_needed()) return;
   double lo = std::numeric_limits<double>::infinity(), hi = -lo;
-  for (const MpmMaterial& m : setup_.materials)
+  const bool faces = setup_.flags.explicit_heat_conduction;  // Dirichlet faces act with conduction on
+  for (const MpmMaterial& m : setup_.materials) {
     for (double T : m.particles.temperature) {
       lo = std::min(lo, T);
       hi = std::max(hi, T);
     }
+    if (faces)
+      for (const auto& T : m.bcs.temperature)
+        if (T) {
+          lo = std::min(lo, *T);
+          hi = std::max(hi, *T);
+        }
+  }
   if (!(hi > lo)) return;
   conducting_ = true;
   PhaseTimers::Scope timer(phase_timers(), "MPM: heat conduction");
   auto& mats = setup_.materials;
   for (MpmMaterial& m : mats) {
     temperature_to_grid(m.particles, m.stencils, m.grid, m.thermal);
+    if (faces) apply_temperature_bcs(m.bcs, m.grid, m.thermal.temperature);
     if (setup_.flags.explicit_heat_conduction && m.thermal_conductivity > 0.0)
       add_conduction_rate(m.particles, m.stencils, m.grid, m.thermal_conductivity, m.specific_heat, m.thermal);
   }
@@ -69,6 +81,11 @@ void MpmComponent::compute_heat_rates(double dt) {
     }
     add_thermal_contact_rate(grids, cv, dt, thermal);
   }
+  // The face nodes hold their temperature through the step: rate 0 there
+  // (mpm/thermal/TemperatureBoundary.h says why the rate is not taken against
+  // the node temperature without the condition, as Vaango does).
+  if (faces)
+    for (MpmMaterial& m : mats) hold_temperature_faces(m.bcs, m.grid, m.thermal.rate);
 }
 
 // G2P of the temperature: T_{n+1} = T_n + dt (sum_g rate_g S_gp + hdot_p),

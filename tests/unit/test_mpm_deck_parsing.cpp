@@ -86,6 +86,24 @@ TEST(MpmDeckParsing, ThermalDampingDeletionErosionAndStabilizationFlags) {
                DeckError);
 }
 
+TEST(MpmDeckParsing, TemperatureBoundaryConditions) {
+  auto d = deck(
+      "<Grid><BoundaryConditions>"
+      "<Face side='x-'><BCType id='all' var='Dirichlet' label='Temperature'><value>400</value></BCType></Face>"
+      "<Face side='x+'><BCType id='all' var='Neumann' label='Temperature'><value>0</value></BCType></Face>"
+      "</BoundaryConditions></Grid>");
+  GridBoundaryConditions b = parse_grid_boundary_conditions(d->root.require_child("Grid").child("BoundaryConditions"), 0);
+  ASSERT_TRUE(b.temperature[0].has_value());
+  EXPECT_EQ(*b.temperature[0], 400.0);
+  EXPECT_FALSE(b.temperature[1].has_value());  // zero flux: the natural condition
+  auto flux = deck(
+      "<Grid><BoundaryConditions>"
+      "<Face side='x+'><BCType id='all' var='Neumann' label='Temperature'><value>5</value></BCType></Face>"
+      "</BoundaryConditions></Grid>");
+  EXPECT_THROW(parse_grid_boundary_conditions(flux->root.require_child("Grid").child("BoundaryConditions"), 0),
+               MissingFeature);
+}
+
 TEST(MpmDeckParsing, BoundaryConditions) {
   auto d = deck(
       "<Grid><BoundaryConditions>"
