@@ -42,8 +42,9 @@ struct GridBoundaryConditions {
 };
 
 // Reads <BoundaryConditions> (may be null: no conditions) for material `material`.
-// Face kinds other than Dirichlet Velocity and symmetry, and faces with
-// circle/rectangle/annulus patches, are MissingFeature.
+// Dirichlet Temperature faces are read for the heat conduction; a zero
+// Neumann Temperature is the natural (insulated) face. Other face kinds, and
+// faces with circle/rectangle/annulus patches, are MissingFeature.
 GridBoundaryConditions parse_grid_boundary_conditions(const DeckNode* bcs, int material);
 
 }  // namespace tephra
