@@ -4,7 +4,7 @@ namespace tephra {
 
 namespace {
 
-// fn(node index, face temperature) for every node of every Dirichlet face.
+// fn(node index, face temperature, face f, face-plane node index) for every node of every Dirichlet face.
 template <class Fn>
 void for_each_face_node(const GridBoundaryConditions& bcs, const NodeGrid& g, Fn&& fn) {
   for (int f = 0; f < 6; ++f) {
@@ -21,7 +21,11 @@ void for_each_face_node(const GridBoundaryConditions& bcs, const NodeGrid& g, Fn
       const int lo_a = k == 0 ? g.extra[a] : 0, hi_a = k == 0 ? g.n[a] - g.extra[a] : g.n[a];
       const int lo_b = k == 0 ? g.extra[b] : 0, hi_b = k == 0 ? g.n[b] - g.extra[b] : g.n[b];
       for (c[b] = lo_b; c[b] < hi_b; ++c[b])
-        for (c[a] = lo_a; c[a] < hi_a; ++c[a]) fn(g.index(c), value);
+        for (c[a] = lo_a; c[a] < hi_a; ++c[a]) {
+          IntVec3 on_face = c;
+          on_face[d] = face_plane;
+          fn(g.index(c), value, f, on_face);
+        }
     }
   }
 }
@@ -35,11 +39,23 @@ bool has_temperature_bcs(const GridBoundaryConditions& bcs) {
 }
 
 void apply_temperature_bcs(const GridBoundaryConditions& bcs, const NodeGrid& g, std::vector<double>& T) {
-  for_each_face_node(bcs, g, [&](std::size_t i, double value) { T[i] = value; });
+  for_each_face_node(bcs, g, [&](std::size_t i, double value, int, const IntVec3&) { T[i] = value; });
 }
 
-void hold_temperature_faces(const GridBoundaryConditions& bcs, const NodeGrid& g, std::vector<double>& rate) {
-  for_each_face_node(bcs, g, [&](std::size_t i, double) { rate[i] = 0.0; });
+void face_temperature_rates(const GridBoundaryConditions& bcs, const NodeGrid& g, const std::vector<double>& T,
+                            const std::vector<double>& T_free, const std::vector<Vec3>& xbar, double dt,
+                            std::vector<double>& rate) {
+  for_each_face_node(bcs, g, [&](std::size_t i, double T_bc, int f, const IntVec3& on_face) {
+    if (!(g.mass[i] > 0.0)) return;
+    const int d = f / 2, inward = (f % 2 == 0) ? 1 : -1;
+    IntVec3 in = on_face;
+    in[d] += inward;
+    const double x_face = g.origin[d] + on_face[d] * g.h[d];
+    // dT/dx_d from the face to the first interior node; the centroid offset along d.
+    const double slope = (T[g.index(in)] - T_bc) / (inward * g.h[d]);
+    const double expected = T_bc + slope * (xbar[i][d] - x_face);
+    rate[i] = (expected - T_free[i]) / dt;
+  });
 }
 
 }  // namespace tephra

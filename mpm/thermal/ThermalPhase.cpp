@@ -9,6 +9,7 @@
 #include "mpm/MpmComponent.h"
 #include "mpm/thermal/HeatConduction.h"
 #include "mpm/thermal/TemperatureBoundary.h"
+#include "mpm/contact/ContactNormals.h"
 
 namespace tephra {
 
@@ -64,9 +65,15 @@ void MpmComponent::compute_heat_rates(double dt) {
   conducting_ = true;
   PhaseTimers::Scope timer(phase_timers(), "MPM: heat conduction");
   auto& mats = setup_.materials;
-  for (MpmMaterial& m : mats) {
+  // P2G temperatures before the face values (Vaango's gTemperatureNoBC), per material with faces.
+  std::vector<std::vector<double>> T_free(mats.size());
+  for (std::size_t i = 0; i < mats.size(); ++i) {
+    MpmMaterial& m = mats[i];
     temperature_to_grid(m.particles, m.stencils, m.grid, m.thermal);
-    if (faces) apply_temperature_bcs(m.bcs, m.grid, m.thermal.temperature);
+    if (faces && has_temperature_bcs(m.bcs)) {
+      T_free[i] = m.thermal.temperature;
+      apply_temperature_bcs(m.bcs, m.grid, m.thermal.temperature);
+    }
     if (setup_.flags.explicit_heat_conduction && m.thermal_conductivity > 0.0)
       add_conduction_rate(m.particles, m.stencils, m.grid, m.thermal_conductivity, m.specific_heat, m.thermal);
   }
@@ -81,11 +88,16 @@ void MpmComponent::compute_heat_rates(double dt) {
     }
     add_thermal_contact_rate(grids, cv, dt, thermal);
   }
-  // The face nodes hold their temperature through the step: rate 0 there
-  // (mpm/thermal/TemperatureBoundary.h says why the rate is not taken against
-  // the node temperature without the condition, as Vaango does).
-  if (faces)
-    for (MpmMaterial& m : mats) hold_temperature_faces(m.bcs, m.grid, m.thermal.rate);
+  // The face nodes' rates (mpm/thermal/TemperatureBoundary.h): the P2G
+  // temperature is pulled to the value the face predicts at the particles'
+  // centroid.
+  for (std::size_t i = 0; i < mats.size(); ++i) {
+    if (T_free[i].empty()) continue;
+    MpmMaterial& m = mats[i];
+    std::vector<Vec3> xbar;
+    mass_weighted_position(m.particles, m.stencils, m.grid, xbar);
+    face_temperature_rates(m.bcs, m.grid, m.thermal.temperature, T_free[i], xbar, dt, m.thermal.rate);
+  }
 }
 
 // G2P of the temperature: T_{n+1} = T_n + dt (sum_g rate_g S_gp + hdot_p),
