@@ -47,6 +47,10 @@ GridBoundaryConditions parse_grid_boundary_conditions(const DeckNode* bcs, int m
       if (label == "Velocity" && var == "Dirichlet") {
         out.face[f].kind = FaceVelocityBC::Kind::Velocity;
         out.face[f].value = bc.get_vec3("value");
+      } else if (label == "Temperature" && var == "Dirichlet") {
+        out.temperature[f] = bc.get_double("value");
+      } else if (label == "Temperature" && var == "Neumann" && bc.get_double("value") == 0.0) {
+        // Zero heat flux: the natural condition of the conduction (nothing to do).
       } else if (label == "Symmetric" && var == "symmetry") {
         out.face[f].kind = FaceVelocityBC::Kind::Symmetry;
       } else if (label == "Symmetric" || var == "symmetry") {

@@ -24,6 +24,10 @@ struct FaceVelocityBC {
 struct GridBoundaryConditions {
   // faces: 0 x-, 1 x+, 2 y-, 3 y+, 4 z-, 5 z+
   std::array<FaceVelocityBC, 6> face;
+  // Dirichlet temperature [K] of each face (var="Dirichlet" label="Temperature"),
+  // or none: insulated (zero Neumann). Applied by the heat conduction
+  // (mpm/thermal/TemperatureBoundary.h).
+  std::array<std::optional<double>, 6> temperature;
   // GIMP, CPDI and B-spline supports reach the extra-cell nodes; Vaango
   // (MPMBoundCond::setBoundaryCondition) then also sets those: a Velocity face
   // gives them the value, a symmetry face mirrors the interior, node
@@ -38,8 +42,9 @@ struct GridBoundaryConditions {
 };
 
 // Reads <BoundaryConditions> (may be null: no conditions) for material `material`.
-// Face kinds other than Dirichlet Velocity and symmetry, and faces with
-// circle/rectangle/annulus patches, are MissingFeature.
+// Dirichlet Temperature faces are read for the heat conduction; a zero
+// Neumann Temperature is the natural (insulated) face. Other face kinds, and
+// faces with circle/rectangle/annulus patches, are MissingFeature.
 GridBoundaryConditions parse_grid_boundary_conditions(const DeckNode* bcs, int material);
 
 }  // namespace tephra

@@ -13,6 +13,8 @@
 #include "mpm/Axisymmetric.h"
 #include "mpm/DeformationGradient.h"
 #include "mpm/StrainWork.h"
+#include "mpm/GridDamping.h"
+#include "mpm/PressureStabilization.h"
 #include "mpm/Transfers.h"
 #include "mpm/contact/ContactNormals.h"
 
@@ -58,6 +60,7 @@ void MpmComponent::initialize() {
   // model's computeStableTimestep at initialization, c(F = I) and v_0).
   stable_dt_ = std::numeric_limits<double>::infinity();
   for (const MpmMaterial& m : setup_.materials) stable_dt_ = std::min(stable_dt_, material_stable_timestep(m));
+  stable_dt_ = std::min(stable_dt_, thermal_stable_timestep());
   time_ = 0.0;
   acc_strain_energy_ = 0.0;
 }
@@ -146,6 +149,7 @@ void MpmComponent::update_stress(MpmMaterial& m, int step, double dt) {
   if (bad >= 0) fail_particle(m, std::size_t(bad), step, "compute stress tensor",
                               "constitutive model '" + m.model->type() +
                                   "' rejected the state (non-finite stress or no real wave speed)");
+  if (setup_.flags.erosion != ErosionAlgorithm::None) erode(m);  // failed particles (mpm/Erosion.h)
   if (setup_.flags.artificial_viscosity) artificial_viscosity(m);
 }
 
@@ -278,10 +282,14 @@ void MpmComponent::advance(double t, double dt, int step) {
     for (MpmMaterial& m : mats) internal_force(m);
     boundary_forces();
   }
+  // 5b. Node temperatures and their rates: conduction, thermal contact (mpm/thermal).
+  compute_heat_rates(dt);
   // 6. a_g = (f_int + f_ext)/m_g, v*_g = v_g + a_g dt (Alg. 7, eqs. 1.71-1.72).
   {
     PhaseTimers::Scope timer(phase_timers(), "MPM: integrate grid acceleration");
     for (MpmMaterial& m : mats) integrate_grid_velocity(m.grid, dt);
+    if (setup_.flags.artificial_damping_coeff > 0.0)  // a_g -= alpha v_g (eq. 1.65, mpm/GridDamping.h)
+      for (MpmMaterial& m : mats) apply_grid_damping(m.grid, setup_.flags.artificial_damping_coeff, dt);
   }
   // 7. Contact on the integrated velocities v*_g.
   if (contact) exchange_momentum(ContactStage::Integrated, t, dt);
@@ -323,6 +331,7 @@ void MpmComponent::advance(double t, double dt, int step) {
       // approximate exp(dt l) (mpm/DeformationGradient.h).
       update_deformation_gradients(deformation_gradient_algorithm(setup_.flags.deformation_gradient),
                                    setup_.flags.deformation_gradient_terms, dt, m.L, p.F);
+      if (setup_.flags.pressure_stabilization) stabilize_pressure(m.grid, p);  // eqs. 1.82-1.84
       if (m.model->rigid()) std::fill(p.F.begin(), p.F.end(), Mat3::Identity());
     }
   }
@@ -335,13 +344,17 @@ void MpmComponent::advance(double t, double dt, int step) {
     if (work) acc_strain_energy_ += 0.5 * piola_work(m.particles, m.particles.F, m.F_old);  // sigma_{n+1} at F_{n+1}
     stable_dt_ = std::min(stable_dt_, material_stable_timestep(m));
   }
+  stable_dt_ = std::min(stable_dt_, thermal_stable_timestep());
   // 13. G2P, FLIP: v_p += dt sum a_g S, x_p += dt sum v*_g S (Alg. 14, eq. 1.76).
   {
     PhaseTimers::Scope timer(phase_timers(), "MPM: interpolate to particles and update");
     for (MpmMaterial& m : mats) {
       Particles& p = m.particles;
+      // v_n, needed only to clamp rogue speeds (<maximum_particle_velocity> given).
+      const std::vector<Vec3> v_old = setup_.flags.maximum_particle_velocity < 3e105 ? p.v : std::vector<Vec3>{};
       grid_to_particles(m.stencils, m.grid, dt, p);
       wrap_periodic_positions(setup_.grid, p);  // re-enter through the opposite periodic face
+      update_temperatures(m, dt);  // T += dt (sum rate_g S + model heating)
       for (std::size_t i = 0; i < p.size(); ++i) {
         if (!p.v[i].allFinite()) fail_particle(m, i, step, "interpolate to particles", "non-finite velocity");
         for (int d = 0; d < 3; ++d) {
@@ -350,6 +363,7 @@ void MpmComponent::advance(double t, double dt, int step) {
             fail_particle(m, i, step, "interpolate to particles", "particle left the grid");
         }
       }
+      delete_particles(m, v_old.empty() ? p.v : v_old, step);  // Vaango's limits (mpm/ParticleDeletion.h)
     }
   }
   time_ = t + dt;

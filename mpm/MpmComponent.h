@@ -24,6 +24,7 @@
 #include "mpm/loads/ParticleLoads.h"
 #include "mpm/mms/ManufacturedSolution.h"
 #include "mpm/shape/Interpolator.h"
+#include "mpm/thermal/HeatConduction.h"
 
 namespace tephra {
 
@@ -32,8 +33,8 @@ struct Deck;
 struct MpmMaterial {
   int index = 0;                        // material index (order in the deck)
   double density = 0.0;                 // rho0 [kg/m^3]
-  double thermal_conductivity = 0.0;    // read, unused (no heat conduction yet)
-  double specific_heat = 0.0;           // c_v [J/(kg K)] (artificial-viscosity heating)
+  double thermal_conductivity = 0.0;    // k [W/(m K)] (mpm/thermal/HeatConduction.h)
+  double specific_heat = 0.0;           // c_v [J/(kg K)] (conduction, contact, AV heating, ThermalEnergy)
   double melt_temperature = 0.0;        // <melt_temp> [K], 0 if absent; read, unused by the implemented models
   double room_temperature = 0.0;        // <room_temp> [K], 0 if absent; read, unused
   ConstitutiveModelP model;
@@ -47,7 +48,8 @@ struct MpmMaterial {
   std::vector<Mat3> L;                  // velocity gradients of the step
   std::vector<Mat3> F_old;              // F_n of the step (the model's input)
   std::vector<double> plastic_work;     // model outputs of the step: dissipated work per V0 [J/m^3]
-  std::vector<double> heating;          //   and internal heating rate dT/dt [K/s] (no heat equation yet)
+  std::vector<double> heating;          //   and internal heating rate dT/dt [K/s], added to T in G2P
+  ThermalNodes thermal;                 // T_g and (dT/dt)_g; empty unless the run conducts heat
 };
 
 struct MpmSetup {
@@ -59,6 +61,10 @@ struct MpmSetup {
   ParticleLoads loads;    // <PhysicalBC><MPM> pressure and force loads (mpm/loads/)
   std::optional<PrescribedDeformation> prescribed;  // <use_prescribed_deformation>, or none
   bool accumulate_strain_energy = false;  // the deck saves AccStrainEnergy (mpm/StrainWork.h)
+  bool thermal_contact = false;
+  // Where and why heat conduction cannot run in this scene yet (periodic or
+  // axisymmetric grids): a MissingFeature at the first step that conducts.
+  std::optional<std::pair<SourceLocation, std::string>> conduction_unsupported;  // <MaterialProperties><MPM><thermal_contact/> (Vaango STThermalContact)
 };
 
 class MpmComponent final : public Component {
@@ -80,6 +86,9 @@ class MpmComponent final : public Component {
   // (reduction label MMSDisplacementErrorL2); 0 without <run_MMS_problem>.
   double mms_displacement_error() const;
 
+  // Total mass of the particles deleted so far (mpm/ParticleDeletion.h) [kg].
+  double deleted_mass() const { return deleted_mass_; }
+
   const std::vector<MpmMaterial>& materials() const { return setup_.materials; }
   std::vector<MpmMaterial>& materials() { return setup_.materials; }
 
@@ -93,6 +102,13 @@ class MpmComponent final : public Component {
   void apply_loads(double t);
   void update_stress(MpmMaterial& m, int step, double dt);
   void artificial_viscosity(MpmMaterial& m) const;
+  // Thermal phases (mpm/thermal/ThermalPhase.cpp).
+  bool thermal_grid_needed() const;
+  double thermal_stable_timestep() const;
+  void compute_heat_rates(double dt);
+  void update_temperatures(MpmMaterial& m, double dt);
+  void erode(MpmMaterial& m);  // mpm/ErosionPhase.cpp
+  void delete_particles(MpmMaterial& m, const std::vector<Vec3>& v_old, int step);  // mpm/ParticleDeletionPhase.cpp
   [[noreturn]] void fail_particle(const MpmMaterial& m, std::size_t i, int step, const std::string& phase,
                                   const std::string& what) const;
   MpmSetup setup_;
@@ -100,6 +116,8 @@ class MpmComponent final : public Component {
   // c(F_{n+1}) and v_n (Vaango's order); part of the restart state.
   double stable_dt_ = std::numeric_limits<double>::infinity();
   double time_ = 0.0;  // time of the particle state (for the MMS error)
+  double deleted_mass_ = 0.0;  // sum of the deleted particles' masses (not part of the restart state)
+  bool conducting_ = false;  // this step computed node temperature rates (compute_heat_rates)
   // Contact scratch of the step (normals, positions, field pointers).
   ContactNodes contact_nodes_;
   // v_g of each material as P2G (and the grid BCs) left it, before the

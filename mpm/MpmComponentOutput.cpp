@@ -13,7 +13,8 @@ const char* const kParticleLabels[] = {"p.x", "p.particleID", "p.volume", "p.vel
 const char* const kNodeLabels[] = {"g.mass", "g.volume", "g.velocity", "g.velocity_star", "g.acceleration",
                                    "g.externalforce", "g.internalforce", "g.stressFS"};
 const char* const kReductionLabels[] = {"KineticEnergy", "StrainEnergy", "TotalMass", "TotalMomentum",
-                                        "CenterOfMassPosition", "MMSDisplacementErrorL2", "AccStrainEnergy"};
+                                        "CenterOfMassPosition", "MMSDisplacementErrorL2", "AccStrainEnergy",
+                                        "ThermalEnergy"};
 
 void append(std::vector<double>& out, double v) { out.push_back(v); }
 void append(std::vector<double>& out, const Vec3& v) { out.insert(out.end(), v.data(), v.data() + 3); }
@@ -189,6 +190,15 @@ std::map<std::string, std::vector<double>> MpmComponent::reductions(const std::s
   if (labels.count("TotalMomentum")) out["TotalMomentum"] = {mom[0], mom[1], mom[2]};
   // sqrt(sum V0 |u_p - u_exact(X_p, t)|^2 / sum V0) with <run_MMS_problem>
   // (a Tephra label: Vaango computes this error in post-processing scripts).
+  // ThermalEnergy = sum m_p c_v T_p (Vaango's definition, c_v the material's
+  // <specific_heat>), summed only when the deck saves it.
+  if (labels.count("ThermalEnergy")) {
+    double thermal = 0.0;
+    for (const MpmMaterial& m : setup_.materials)
+      for (std::size_t i = 0; i < m.particles.size(); ++i)
+        thermal += m.particles.mass[i] * m.specific_heat * m.particles.temperature[i];
+    out["ThermalEnergy"] = {thermal};
+  }
   if (labels.count("MMSDisplacementErrorL2")) out["MMSDisplacementErrorL2"] = {mms_displacement_error()};
   if (labels.count("CenterOfMassPosition")) {
     const Vec3 c = mass > 0 ? Vec3(mx / mass) : Vec3::Zero();

@@ -135,6 +135,8 @@ std::unique_ptr<MpmComponent> make_mpm_component(const Deck& deck) {
       if (model && setup.contact)
         c.missing_feature("a second non-null <contact> model (Vaango's composite contact)");
       if (model) setup.contact = std::move(model);
+    } else if (c.name == "thermal_contact") {
+      setup.thermal_contact = true;  // Vaango STThermalContact (mpm/thermal/HeatConduction.h)
     } else {
       c.missing_feature("<MaterialProperties><MPM><" + c.name + ">");
     }

@@ -50,13 +50,22 @@ void read_loads_and_drivers(const Deck& deck, MpmSetup& setup) {
                               "' interpolator (implemented: linear)");
 }
 
-void check_driver_combinations(const Deck& deck, const MpmSetup& setup) {
+void check_driver_combinations(const Deck& deck, MpmSetup& setup) {
   const DeckNode& root = deck.root;
   if ((setup.grid.periodic.array() != 0).any() && setup.contact && setup.materials.size() > 1)
     root.require_child("Grid").missing_feature("periodic MPM with contact (normals across a periodic face)");
   if (setup.flags.axisymmetric && setup.contact && setup.materials.size() > 1)
     root.require_child("MPM").require_child("axisymmetric").missing_feature(
         "axisymmetric MPM with contact (normals from the axisymmetric gradients)");
+  // Heat conduction (mpm/thermal) sums node temperatures without the periodic
+  // fold and with Cartesian volumes: not combined with either yet. A scene
+  // whose temperature stays uniform never conducts, so the run stops (exit 3,
+  // naming this element) only at the first step that would conduct.
+  if ((setup.grid.periodic.array() != 0).any())
+    setup.conduction_unsupported = {root.require_child("Grid").location(), "periodic MPM with heat conduction"};
+  if (setup.flags.axisymmetric)
+    setup.conduction_unsupported = {root.require_child("MPM").require_child("axisymmetric").location(),
+                                    "axisymmetric MPM with heat conduction"};
 }
 
 }  // namespace tephra

@@ -13,6 +13,6 @@ struct MpmSetup;
 // After setup.grid and setup.flags are read.
 void read_loads_and_drivers(const Deck& deck, MpmSetup& setup);
 // After the materials and contact are read: combinations not implemented.
-void check_driver_combinations(const Deck& deck, const MpmSetup& setup);
+void check_driver_combinations(const Deck& deck, MpmSetup& setup);
 
 }  // namespace tephra

@@ -16,9 +16,9 @@ namespace {
 // valid value.
 const char* const kNoEffect[] = {
     "withColor", "computeScaleFactor", "computeNodalHeatFlux",
-    "DoExplicitHeatConduction", "do_explicit_heat_conduction", "DoTransientImplicitHeatConduction", "DoThermalExpansion",
+    "DoTransientImplicitHeatConduction", "DoThermalExpansion",
     "do_contact_friction_heating", "interpolateParticleTempToGridEveryStep", "testForNegTemps_mpm",
-    "minimum_particle_mass", "maximum_particle_velocity", "min_grid_level", "max_grid_level",
+    "min_grid_level", "max_grid_level",
     "CanAddMPMMaterial",
 };
 
@@ -27,12 +27,10 @@ const char* const kNoEffect[] = {
 const std::map<std::string, std::string>& physics_defaults() {
   static const std::map<std::string, std::string> table = {
       {"time_integrator", "explicit"},
-      {"artificial_damping_coeff", "0"},
       {"create_new_particles", "false"},
       {"manual_new_material", "false"},
       {"DoImplicitHeatConduction", "false"},
       {"do_grid_reset", "true"},
-      {"DoPressureStabilization", "false"},
       {"UseGradientEnhancedVelocityProjection", "false"},
       {"initialize_stress_using_body_force", "false"},
       {"InsertParticles", "false"},
@@ -130,6 +128,26 @@ MpmFlags parse_mpm_flags(const DeckNode* mpm) {
     // used (mpm/PrescribedDeformation.h), so <exact_deformation> has no effect.
     if (c.name == "prescribed_deformation_file") continue;
     if (c.name == "exact_deformation" || c.name == "exactDeformation") { c.as_bool(); continue; }
+    if (c.name == "do_explicit_heat_conduction" || c.name == "DoExplicitHeatConduction") {
+      flags.explicit_heat_conduction = c.as_bool();
+      continue;
+    }
+    if (c.name == "minimum_particle_mass" || c.name == "maximum_particle_velocity") {
+      const double v = c.as_double();
+      if (!(v > 0.0)) c.fail(c.name + " must be > 0");
+      (c.name == "minimum_particle_mass" ? flags.minimum_particle_mass : flags.maximum_particle_velocity) = v;
+      continue;
+    }
+    if (c.name == "do_pressure_stabilization" || c.name == "DoPressureStabilization") {
+      flags.pressure_stabilization = c.as_bool();
+      continue;
+    }
+    if (c.name == "delete_rogue_particles") { flags.delete_rogue_particles = c.as_bool(); continue; }
+    if (c.name == "artificial_damping_coeff") {
+      flags.artificial_damping_coeff = c.as_double();
+      if (!(flags.artificial_damping_coeff >= 0.0)) c.fail("artificial_damping_coeff must be >= 0");
+      continue;
+    }
     if (c.name == "artificial_viscosity_coeff1" || c.name == "artificial_viscosity_coeff2") {
       const double a = c.as_double();
       if (!(a >= 0.0)) c.fail(c.name + " must be >= 0");
@@ -140,7 +158,9 @@ MpmFlags parse_mpm_flags(const DeckNode* mpm) {
     if (c.name == "erosion") {
       // <erosion algorithm="none"/>
       const std::string alg = c.attribute("algorithm").value_or("none");
-      if (alg != "none") c.missing_feature("MPM erosion algorithm '" + alg + "'");
+      if (!erosion_algorithm_from_name(alg, flags.erosion))
+        c.missing_feature("MPM erosion algorithm '" + alg +
+                          "' (implemented: none, ZeroStress, AllowNoTension, AllowNoShear, KeepStress)");
       continue;
     }
     if (c.name == "deformation_gradient") {
@@ -165,6 +185,13 @@ MpmFlags parse_mpm_flags(const DeckNode* mpm) {
       c.missing_feature("MPM flag <" + c.name + "> = '" + c.text + "' (only the default '" + it->second +
                         "' is implemented)");
   }
+  // Vaango (MPMFlags::readMPMFlags): <artificial_viscosity>true turns the
+  // heating on unless <artificial_viscosity_heating> says otherwise, and
+  // heating without the viscosity is an input error.
+  const DeckNode* heating = mpm->child("artificial_viscosity_heating");
+  if (!heating) flags.artificial_viscosity_heating = flags.artificial_viscosity;
+  else if (flags.artificial_viscosity_heating && !flags.artificial_viscosity)
+    heating->fail("artificial_viscosity_heating needs <artificial_viscosity>true");
   return flags;
 }
 

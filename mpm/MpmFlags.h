@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "mpm/Erosion.h"
 #include "mpm/shape/Interpolator.h"
 
 namespace tephra {
@@ -30,9 +31,26 @@ struct MpmFlags {
   bool artificial_viscosity = false;
   double artificial_viscosity_coeff1 = 0.2;
   double artificial_viscosity_coeff2 = 2.0;
-  // <artificial_viscosity_heating>: adds -q tr D / (rho c_v) to the particle
+  // <artificial_viscosity_heating> (Vaango's default: the value of
+  // <artificial_viscosity>): adds -q tr D / (rho c_v) to the particle
   // heating rate dT/dt (Vaango's include_AV_heating).
   bool artificial_viscosity_heating = false;
+  // <do_explicit_heat_conduction> (Vaango's default true): materials with
+  // k > 0 conduct heat on the grid (mpm/thermal/HeatConduction.h).
+  bool explicit_heat_conduction = true;
+  // <artificial_damping_coeff> alpha [1/s] (theory manual eq. 1.65 per unit
+  // node mass): a_g = (f_int + f_ext)/m_g - alpha v_g. 0 = no damping.
+  double artificial_damping_coeff = 0.0;
+  // Particle limits applied after G2P (mpm/ParticleDeletion.h), Vaango's defaults.
+  double minimum_particle_mass = 3e-15;      // <minimum_particle_mass> [kg]: lighter particles are deleted
+  double maximum_particle_velocity = 3e105;  // <maximum_particle_velocity> [m/s]: clamp or delete
+  bool delete_rogue_particles = false;       // <delete_rogue_particles>: delete instead of clamping
+  // <do_pressure_stabilization>: F_p takes its cell's mean dilatation
+  // (theory manual eqs. 1.82-1.84, mpm/PressureStabilization.h).
+  bool pressure_stabilization = false;
+  // <erosion algorithm="...">: what happens to the stress of particles the
+  // model flags as failed (mpm/Erosion.h).
+  ErosionAlgorithm erosion = ErosionAlgorithm::None;
   // <use_load_curves>: accepted; loads (<PhysicalBC>) are checked in MpmDeck.
   bool use_load_curves = false;
   // <deformation_gradient algorithm=...>: how F_{n+1} follows from l and F_n

@@ -31,9 +31,12 @@ TEST(MpmDeckParsing, FlagsAcceptDefaultsAndRejectTheRest) {
   EXPECT_THROW(parse_mpm_flags(deck("<MPM><cpdi_lcrit>-1</cpdi_lcrit></MPM>")->root.child("MPM")), DeckError);
   EXPECT_THROW(parse_mpm_flags(deck("<MPM><interpolator>gimpy</interpolator></MPM>")->root.child("MPM")),
                DeckError);
-  EXPECT_THROW(
-      parse_mpm_flags(deck("<MPM><artificial_damping_coeff>0.1</artificial_damping_coeff></MPM>")->root.child("MPM")),
-      MissingFeature);
+  EXPECT_EQ(
+      parse_mpm_flags(deck("<MPM><artificial_damping_coeff>0.1</artificial_damping_coeff></MPM>")->root.child("MPM"))
+          .artificial_damping_coeff,
+      0.1);
+  EXPECT_THROW(parse_mpm_flags(deck("<MPM><erosion algorithm='BrittleDamage'/></MPM>")->root.child("MPM")),
+               MissingFeature);
   EXPECT_THROW(parse_mpm_flags(deck("<MPM><no_such_flag>1</no_such_flag></MPM>")->root.child("MPM")),
                MissingFeature);
   try {
@@ -42,6 +45,63 @@ TEST(MpmDeckParsing, FlagsAcceptDefaultsAndRejectTheRest) {
   } catch (const MissingFeature& e) {
     EXPECT_NE(std::string(e.what()).find("t.ups:2"), std::string::npos) << e.what();
   }
+}
+
+TEST(MpmDeckParsing, ThermalDampingDeletionErosionAndStabilizationFlags) {
+  const MpmFlags d = parse_mpm_flags(nullptr);  // Vaango's defaults
+  EXPECT_TRUE(d.explicit_heat_conduction);
+  EXPECT_EQ(d.artificial_damping_coeff, 0.0);
+  EXPECT_EQ(d.minimum_particle_mass, 3e-15);
+  EXPECT_EQ(d.maximum_particle_velocity, 3e105);
+  EXPECT_FALSE(d.delete_rogue_particles);
+  EXPECT_EQ(d.erosion, ErosionAlgorithm::None);
+  EXPECT_FALSE(d.pressure_stabilization);
+  const MpmFlags f = parse_mpm_flags(
+      deck("<MPM><do_explicit_heat_conduction>false</do_explicit_heat_conduction>"
+           "<minimum_particle_mass>1e-9</minimum_particle_mass><maximum_particle_velocity>1e3</maximum_particle_velocity>"
+           "<delete_rogue_particles>true</delete_rogue_particles><erosion algorithm='AllowNoTension'/>"
+           "<do_pressure_stabilization>true</do_pressure_stabilization></MPM>")
+          ->root.child("MPM"));
+  EXPECT_FALSE(f.explicit_heat_conduction);
+  EXPECT_EQ(f.minimum_particle_mass, 1e-9);
+  EXPECT_EQ(f.maximum_particle_velocity, 1e3);
+  EXPECT_TRUE(f.delete_rogue_particles);
+  EXPECT_EQ(f.erosion, ErosionAlgorithm::AllowNoTension);
+  EXPECT_TRUE(f.pressure_stabilization);
+  // Vaango: artificial viscosity implies its heating unless the deck says no;
+  // heating without the viscosity is an error.
+  EXPECT_TRUE(parse_mpm_flags(deck("<MPM><artificial_viscosity>true</artificial_viscosity></MPM>")->root.child("MPM"))
+                  .artificial_viscosity_heating);
+  EXPECT_FALSE(parse_mpm_flags(deck("<MPM><artificial_viscosity>true</artificial_viscosity>"
+                                    "<artificial_viscosity_heating>false</artificial_viscosity_heating></MPM>")
+                                   ->root.child("MPM"))
+                   .artificial_viscosity_heating);
+  EXPECT_THROW(
+      parse_mpm_flags(
+          deck("<MPM><artificial_viscosity_heating>true</artificial_viscosity_heating></MPM>")->root.child("MPM")),
+      DeckError);
+  EXPECT_THROW(parse_mpm_flags(deck("<MPM><artificial_damping_coeff>-1</artificial_damping_coeff></MPM>")->root.child("MPM")),
+               DeckError);
+  EXPECT_THROW(parse_mpm_flags(deck("<MPM><minimum_particle_mass>0</minimum_particle_mass></MPM>")->root.child("MPM")),
+               DeckError);
+}
+
+TEST(MpmDeckParsing, TemperatureBoundaryConditions) {
+  auto d = deck(
+      "<Grid><BoundaryConditions>"
+      "<Face side='x-'><BCType id='all' var='Dirichlet' label='Temperature'><value>400</value></BCType></Face>"
+      "<Face side='x+'><BCType id='all' var='Neumann' label='Temperature'><value>0</value></BCType></Face>"
+      "</BoundaryConditions></Grid>");
+  GridBoundaryConditions b = parse_grid_boundary_conditions(d->root.require_child("Grid").child("BoundaryConditions"), 0);
+  ASSERT_TRUE(b.temperature[0].has_value());
+  EXPECT_EQ(*b.temperature[0], 400.0);
+  EXPECT_FALSE(b.temperature[1].has_value());  // zero flux: the natural condition
+  auto flux = deck(
+      "<Grid><BoundaryConditions>"
+      "<Face side='x+'><BCType id='all' var='Neumann' label='Temperature'><value>5</value></BCType></Face>"
+      "</BoundaryConditions></Grid>");
+  EXPECT_THROW(parse_grid_boundary_conditions(flux->root.require_child("Grid").child("BoundaryConditions"), 0),
+               MissingFeature);
 }
 
 TEST(MpmDeckParsing, BoundaryConditions) {

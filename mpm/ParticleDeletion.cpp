@@ -1,0 +1,84 @@
+#include "mpm/ParticleDeletion.h"
+
+#include <sstream>
+
+namespace tephra {
+
+namespace {
+
+// Keeps the rows of `column` (components values per row) with keep[i] != 0.
+template <class T>
+void compact(std::vector<T>& column, const std::vector<char>& keep, std::size_t components = 1) {
+  if (column.empty()) return;
+  std::size_t out = 0;
+  for (std::size_t i = 0; i < keep.size(); ++i) {
+    if (!keep[i]) continue;
+    if (out != i)
+      for (std::size_t c = 0; c < components; ++c) column[out * components + c] = column[i * components + c];
+    ++out;
+  }
+  column.resize(out * components);
+}
+
+}  // namespace
+
+void remove_particles(Particles& p, const std::vector<char>& keep, std::vector<std::vector<double>*> extra_doubles,
+                      std::vector<std::vector<Mat3>*> extra_mats) {
+  const std::size_t n = p.size();
+  compact(p.x, keep);
+  compact(p.v, keep);
+  compact(p.displacement, keep);
+  compact(p.external_force, keep);
+  compact(p.F, keep);
+  compact(p.stress, keep);
+  compact(p.psize, keep);
+  compact(p.mass, keep);
+  compact(p.volume, keep);
+  compact(p.volume0, keep);
+  compact(p.temperature, keep);
+  compact(p.color, keep);
+  compact(p.wave_speed, keep);
+  compact(p.energy_density, keep);
+  compact(p.q, keep);
+  compact(p.id, keep);
+  // History columns hold `components` values per particle.
+  for (std::vector<double>& h : p.history) compact(h, keep, n ? h.size() / n : 1);
+  for (std::vector<double>* c : extra_doubles)
+    if (c->size() == n) compact(*c, keep);
+  for (std::vector<Mat3>* c : extra_mats)
+    if (c->size() == n) compact(*c, keep);
+}
+
+std::vector<char> apply_particle_limits(const ParticleLimits& limits, const std::vector<Vec3>& v_old,
+                                        Particles& p, std::vector<DeletedParticle>& deleted) {
+  std::vector<char> keep(p.size(), 1);
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    std::string reason;
+    if (p.mass[i] <= limits.minimum_mass) {
+      std::ostringstream s;
+      s << "mass " << p.mass[i] << " kg <= minimum_particle_mass " << limits.minimum_mass;
+      reason = s.str();
+    } else if (p.temperature[i] < 0.0) {
+      std::ostringstream s;
+      s << "negative temperature " << p.temperature[i] << " K";
+      reason = s.str();
+    }
+    const double speed = p.v[i].norm();
+    if (reason.empty() && speed > limits.maximum_speed) {
+      if (limits.delete_rogue) {
+        std::ostringstream s;
+        s << "speed " << speed << " m/s > maximum_particle_velocity " << limits.maximum_speed;
+        reason = s.str();
+      } else if (speed >= v_old[i].norm()) {
+        p.v[i] *= 0.9 * limits.maximum_speed / speed;
+      }
+    }
+    if (!reason.empty()) {
+      keep[i] = 0;
+      deleted.push_back({p.id[i], p.mass[i], reason});
+    }
+  }
+  return keep;
+}
+
+}  // namespace tephra

@@ -1,0 +1,31 @@
+// MpmComponent: the end-of-step particle limits and deletion (mpm/ParticleDeletion.h).
+#include <sstream>
+
+#include "core/base/Log.h"
+#include "mpm/MpmComponent.h"
+#include "mpm/ParticleDeletion.h"
+
+namespace tephra {
+
+// After G2P: clamps or deletes rogue particles, deletes light and negative-
+// temperature ones, and reports each deletion (a warning naming the particle,
+// the material, the step and the reason; the deleted mass is summed in
+// deleted_mass()).
+void MpmComponent::delete_particles(MpmMaterial& m, const std::vector<Vec3>& v_old, int step) {
+  const MpmFlags& f = setup_.flags;
+  const ParticleLimits limits{f.minimum_particle_mass, f.maximum_particle_velocity, f.delete_rogue_particles};
+  std::vector<DeletedParticle> deleted;
+  std::vector<char> keep = apply_particle_limits(limits, v_old, m.particles, deleted);
+  if (deleted.empty()) return;
+  for (const DeletedParticle& d : deleted) {
+    deleted_mass_ += d.mass;
+    std::ostringstream s;
+    s.precision(17);
+    s << "MPM step " << step << ": deleted particle id " << d.id << " of material " << m.index << " (mass "
+      << d.mass << " kg): " << d.reason;
+    log::warning(s.str());
+  }
+  remove_particles(m.particles, keep, {&m.plastic_work, &m.heating}, {&m.L, &m.F_old});
+}
+
+}  // namespace tephra
