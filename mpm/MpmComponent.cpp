@@ -325,7 +325,9 @@ double MpmComponent::mms_displacement_error() const {
   return std::sqrt(e2);
 }
 
-std::vector<std::string> mpm_interpolators() { return {"linear", "gimp", "cpdi", "3rdorderBS", "cpgimp"}; }
+std::vector<std::string> mpm_interpolators() {
+  return {"linear", "gimp", "cpdi", "cpti", "3rdorderBS", "4thorderBS", "cpgimp"};
+}
 std::vector<std::string> mpm_contact_types() { return contact_types(); }
 
 }  // namespace tephra
