@@ -70,6 +70,20 @@ class ApproachContact final : public ContactModel {
   double mu_, volume_constraint_;
 };
 
+// <type>nodal_svf</type>: drag between two materials (NodalSvfContact.cpp).
+class NodalSvfContact final : public ContactModel {
+ public:
+  NodalSvfContact(int alpha, int beta, double myu, bool use_svf)
+      : alpha_(alpha), beta_(beta), myu_(myu), use_svf_(use_svf) {}
+  std::string type() const override { return "nodal_svf"; }
+  void exchange(ContactStage stage, ContactNodes& nodes) const override;
+
+ private:
+  int alpha_, beta_;  // the two materials (<materials>, default 0 and 1)
+  double myu_;        // <myu> [N s/m^4]
+  bool use_svf_;      // <use_svf>
+};
+
 // <type>specified</type> (alias rigid): a master material whose node velocity
 // is prescribed, acting at the integrated stage only (VT eq. 1.110, 3.1).
 struct SpecifiedParameters {
