@@ -167,6 +167,9 @@ void MpmComponent::exchange_momentum(ContactStage stage, double t, double dt) {
   if (stage == ContactStage::Interpolated) {
     c.grid.clear();
     for (const MpmMaterial& m : mats) c.grid.push_back(&m.grid);
+    c.particles.clear();
+    c.stencils.clear();
+    for (const MpmMaterial& m : mats) c.particles.push_back(&m.particles), c.stencils.push_back(&m.stencils);
     c.h = setup_.grid.dx;
     c.t = t;
     c.dt = dt;

@@ -344,7 +344,15 @@ TEST(MpmContactModels, ParsingAcceptsVaangoParametersAndRejectsTheRest) {
   EXPECT_FALSE(bard1->acts_on(ContactStage::Interpolated));
   EXPECT_TRUE(bard1->acts_on(ContactStage::Integrated));
 
-  throws<MissingFeature>("<contact><type>friction_LR</type><mu>0.1</mu></contact>");
+  auto lr = parse_contact(deck("<contact><type>friction_LR</type><mu>0.1</mu><one_or_two_step>1</one_or_two_step>"
+                               "</contact>")
+                              ->root.require_child("contact"),
+                          2);
+  ASSERT_TRUE(lr);
+  EXPECT_EQ(lr->type(), "friction_LR");
+  EXPECT_FALSE(lr->acts_on(ContactStage::Interpolated));
+  throws<DeckError>("<contact><type>friction_LR</type></contact>");  // mu required
+  throws<DeckError>("<contact><type>friction_LR</type><mu>0.1</mu><myu>1</myu></contact>");
   auto svf = parse_contact(
       deck("<contact><type>nodal_svf</type><myu>1e3</myu><use_svf>true</use_svf></contact>")->root.require_child(
           "contact"),
@@ -374,7 +382,7 @@ TEST(MpmContactModels, ParsingAcceptsVaangoParametersAndRejectsTheRest) {
   }
   EXPECT_EQ(contact_types(),
             (std::vector<std::string>{"null", "single_velocity", "friction", "friction_bard", "approach", "specified",
-                                      "rigid", "nodal_svf"}));
+                                      "rigid", "nodal_svf", "friction_LR"}));
 }
 
 TEST(MpmContactModels, SpecifiedReadsAVelocityTable) {
