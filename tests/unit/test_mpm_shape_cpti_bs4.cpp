@@ -8,6 +8,9 @@
 #include <cmath>
 #include <random>
 
+#include "core/base/Errors.h"
+#include "core/deck/DeckLoader.h"
+#include "mpm/MpmComponent.h"
 #include "mpm/NodeGrid.h"
 #include "mpm/Particles.h"
 #include "mpm/shape/Interpolator.h"
@@ -272,6 +275,36 @@ TEST(MpmShapeCubicBspline, ThreeDimensionalStencils) {
   // A particle in an extra cell has no support: reported.
   c.p.x[7] = c.g.position(0, 4, 4) + Vec3(0.5 * c.g.h[0], 0, 0);
   EXPECT_EQ(compute_stencils(c.p, c.g, {InterpolatorKind::CubicBspline, 1e10}, s), 7);
+}
+
+// 4thorderBS needs no extra cells (its support never leaves the domain's
+// nodes), so a deck without them runs; gimp still requires them.
+std::unique_ptr<MpmComponent> one_block(const std::string& interpolator, int extra) {
+  const std::string e = std::to_string(extra);
+  const std::string xml =
+      "<Uintah_specification><MPM><interpolator>" + interpolator +
+      "</interpolator></MPM><MaterialProperties><MPM><material><density>1000</density>"
+      "<constitutive_model type='comp_neo_hook'><bulk_modulus>1e7</bulk_modulus><shear_modulus>5e6</shear_modulus>"
+      "</constitutive_model><thermal_conductivity>1</thermal_conductivity><specific_heat>1</specific_heat>"
+      "<geom_object><box><min>[0.2,0.2,0.2]</min><max>[0.8,0.8,0.8]</max></box><res>[2,2,2]</res>"
+      "<velocity>[1,0,0]</velocity><temperature>300</temperature></geom_object></material></MPM>"
+      "</MaterialProperties><Grid><BoundaryConditions></BoundaryConditions><Level><Box><lower>[0,0,0]</lower>"
+      "<upper>[1,1,1]</upper><resolution>[8,8,8]</resolution><extraCells>[" + e + "," + e + "," + e +
+      "]</extraCells><patches>[1,1,1]</patches></Box></Level></Grid></Uintah_specification>";
+  auto deck = load_deck_from_string(xml, "bs4.ups", ".");
+  return make_mpm_component(*deck);
+}
+
+TEST(MpmShapeCubicBspline, RunsWithoutExtraCells) {
+  auto c = one_block("4thorderBS", 0);
+  c->initialize();
+  c->advance(0.0, 0.2 * c->stable_timestep(), 1);
+  const Particles& p = c->materials()[0].particles;
+  Vec3 momentum = Vec3::Zero();
+  double mass = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) momentum += p.mass[i] * p.v[i], mass += p.mass[i];
+  EXPECT_NEAR((momentum / mass - Vec3(1, 0, 0)).norm(), 0.0, 1e-12);  // free body, uniform motion
+  EXPECT_THROW(one_block("gimp", 0), DeckError);
 }
 
 }  // namespace
