@@ -186,6 +186,9 @@ void MpmComponent::exchange_momentum(ContactStage stage, double t, double dt) {
   if (stage == ContactStage::Interpolated) {
     c.grid.clear();
     for (const MpmMaterial& m : mats) c.grid.push_back(&m.grid);
+    c.particles.clear();
+    c.stencils.clear();
+    for (const MpmMaterial& m : mats) c.particles.push_back(&m.particles), c.stencils.push_back(&m.stencils);
     c.h = setup_.grid.dx;
     c.t = t;
     c.dt = dt;
@@ -376,7 +379,9 @@ double MpmComponent::mms_displacement_error() const {
   return std::sqrt(e2);
 }
 
-std::vector<std::string> mpm_interpolators() { return {"linear", "gimp", "cpdi", "3rdorderBS", "cpgimp"}; }
+std::vector<std::string> mpm_interpolators() {
+  return {"linear", "gimp", "cpdi", "cpti", "3rdorderBS", "4thorderBS", "cpgimp"};
+}
 std::vector<std::string> mpm_contact_types() { return contact_types(); }
 
 }  // namespace tephra

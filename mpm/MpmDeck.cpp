@@ -114,9 +114,12 @@ std::unique_ptr<MpmComponent> make_mpm_component(const Deck& deck) {
   setup.flags = parse_mpm_flags(root.child("MPM"));
   // Loads, prescribed deformation, AccStrainEnergy, axisymmetric and periodic options (mpm/MpmDeckDrivers.cpp).
   read_loads_and_drivers(deck, setup);
-  // GIMP, CPDI and B-spline supports reach past the particle's cell: a
-  // particle near a domain face weights the node layer of the extra cells.
-  if (setup.flags.interpolator.kind != InterpolatorKind::Linear && (setup.grid.extra_cells.array() < 1).any())
+  // GIMP, CPDI and quadratic B-spline supports reach past the particle's
+  // cell: a particle near a domain face weights the node layer of the extra
+  // cells. (4thorderBS does not: its face-modified splines stay inside.)
+  const InterpolatorKind kind = setup.flags.interpolator.kind;
+  if (kind != InterpolatorKind::Linear && kind != InterpolatorKind::CubicBspline &&
+      (setup.grid.extra_cells.array() < 1).any())
     grid_node.fail("the MPM interpolator '" + interpolator_name(setup.flags.interpolator.kind) +
                    "' needs <extraCells> >= 1 in every direction (its support reaches the node layer "
                    "outside the domain)");

@@ -92,19 +92,21 @@ MpmFlags parse_mpm_flags(const DeckNode* mpm) {
       // cpgimp (contiguous-particle GIMP, theory manual eq. 1.93) is Tephra's
       // addition: Vaango's gimp keeps the particle domain at its initial size.
       for (InterpolatorKind k : {InterpolatorKind::Linear, InterpolatorKind::Gimp, InterpolatorKind::Cpdi,
-                                 InterpolatorKind::QuadraticBspline, InterpolatorKind::CpGimp})
+                                 InterpolatorKind::QuadraticBspline, InterpolatorKind::CpGimp, InterpolatorKind::Cpti,
+                                 InterpolatorKind::CubicBspline})
         if (c.text == interpolator_name(k)) {
           flags.interpolator.kind = k;
           found = true;
         }
       if (found) continue;
-      static const char* known[] = {"cpti", "4thorderBS", "fast_cpdi", "axisym_cpdi", "axisym_cpti",
+      static const char* known[] = {"fast_cpdi", "axisym_cpdi", "axisym_cpti",
                                     "axisym_linear", "axisym_gimp", "fast_axisym_cpdi"};
       for (const char* k : known)
         if (c.text == k)
           c.missing_feature("MPM interpolator '" + c.text +
-                            "' (implemented: linear, gimp, cpdi, 3rdorderBS, cpgimp)");
-      c.fail("unknown MPM interpolator '" + c.text + "' (implemented: linear, gimp, cpdi, 3rdorderBS, cpgimp)");
+                            "' (implemented: linear, gimp, cpdi, cpti, 3rdorderBS, 4thorderBS, cpgimp)");
+      c.fail("unknown MPM interpolator '" + c.text +
+             "' (implemented: linear, gimp, cpdi, cpti, 3rdorderBS, 4thorderBS, cpgimp)");
     }
     if (c.name == "cpdi_lcrit") {
       flags.interpolator.cpdi_lcrit = c.as_double();

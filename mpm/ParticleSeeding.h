@@ -5,7 +5,8 @@
 // volume V0 = cell volume / (res0 res1 res2) and mass m = rho0 V0. A point
 // already covered by an earlier geom_object of the same material is skipped,
 // so overlapping objects do not double the mass (an assumption: Vaango's
-// behaviour for overlaps is not specified in the seeds).
+// behaviour for overlaps is not specified in the seeds). A <file> piece
+// (core/geometry/ParticleFile.h) gives one particle per listed point instead.
 #include <vector>
 
 #include "core/base/Types.h"

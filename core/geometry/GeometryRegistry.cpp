@@ -10,6 +10,7 @@
 #include "core/geometry/Boolean.h"
 #include "core/geometry/DeckChecks.h"
 #include "core/geometry/GeometryPiece.h"
+#include "core/geometry/ParticleFile.h"
 #include "core/geometry/Primitives.h"
 #include "core/geometry/TriMesh.h"
 
@@ -54,9 +55,10 @@ const std::vector<std::string>& non_geometry_children() {
   return names;
 }
 
-// geom_object children that read geometry from files: not implemented yet.
+// geom_object children that read geometry from files and are not
+// implemented yet (<file> is: core/geometry/ParticleFile.h).
 const std::vector<std::string>& unsupported_geom_object_children() {
-  static const std::vector<std::string> names = {"file", "image"};
+  static const std::vector<std::string> names = {"image"};
   return names;
 }
 
@@ -202,6 +204,14 @@ GeometryPieceP GeometryRegistry::parse_geom_object(const DeckNode& geom_object) 
   for (const auto& c : geom_object.children) {
     if (is_piece_name(c.name)) {
       pieces.push_back(parse_piece(c));
+    } else if (c.name == "file") {
+      // Particles listed in a file: seeded point by point, so the file must
+      // be the geom_object's only piece.
+      if (geom_object.children.end() !=
+          std::find_if(geom_object.children.begin(), geom_object.children.end(),
+                       [&](const DeckNode& o) { return &o != &c && (is_piece_name(o.name) || o.name == "file"); }))
+        c.fail("<file> must be the only geometry piece of its <geom_object> (its particles are the listed points)");
+      pieces.push_back(std::make_shared<ParticleFilePiece>(read_particle_file(c)));
     } else if (contains(unsupported_geom_object_children(), c.name)) {
       c.missing_feature("geometry from <geom_object><" + c.name + ">");
     } else if (!contains(non_geometry_children(), c.name)) {

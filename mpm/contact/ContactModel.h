@@ -18,6 +18,8 @@
 
 #include "core/base/Types.h"
 #include "mpm/NodeGrid.h"
+#include "mpm/Particles.h"
+#include "mpm/shape/Interpolator.h"
 
 namespace tephra {
 
@@ -35,6 +37,10 @@ struct ContactNodes {
   std::vector<std::vector<Vec3>> gradient;
   // x^alpha_g = sum_p m_p x_p S_gp / m_g (Vaango's gPosition), when needs_positions().
   std::vector<std::vector<Vec3>> position;
+  // Each material's particles and their stencils of the step (read by
+  // friction_LR's logistic-regression separation test).
+  std::vector<const Particles*> particles;
+  std::vector<const Stencils*> stencils;
   Vec3 h = Vec3::Ones();  // cell size
   double t = 0.0;         // time at the start of the step
   double dt = 0.0;

@@ -121,6 +121,10 @@ const std::set<std::string>& accepted(const std::string& type) {
   static const std::set<std::string> specified = {"materials", "master_material", "direction", "normal_only",
                                                   "volume_constraint", "stop_time", "velocity_after_stop",
                                                   "filename", "master_material_is_rigid"};
+  static const std::set<std::string> svf = {"materials", "myu", "use_svf"};
+  static const std::set<std::string> lr = {"materials", "mu", "volume_constraint", "one_or_two_step"};
+  if (type == "friction_LR") return lr;
+  if (type == "nodal_svf") return svf;
   if (type == "single_velocity" || type == "null") return single;
   if (type == "friction_bard") return bard;
   if (type == "specified" || type == "rigid") return specified;
@@ -130,14 +134,13 @@ const std::set<std::string>& accepted(const std::string& type) {
 }  // namespace
 
 std::vector<std::string> contact_types() {
-  return {"null", "single_velocity", "friction", "friction_bard", "approach", "specified", "rigid"};
+  return {"null",      "single_velocity", "friction",  "friction_bard", "approach",
+          "specified", "rigid",           "nodal_svf", "friction_LR"};
 }
 
 ContactModelP parse_contact(const DeckNode& contact, int material_count) {
   const DeckNode& type_node = contact.require_child("type");
   const std::string type = trimmed(type_node.text);
-  if (type == "nodal_svf" || type == "friction_LR")
-    type_node.missing_feature("MPM contact type '" + type + "'");
   const auto& known = contact_types();
   if (std::find(known.begin(), known.end(), type) == known.end())
     type_node.fail("unknown MPM contact type '" + type + "'");
@@ -160,7 +163,24 @@ ContactModelP parse_contact(const DeckNode& contact, int material_count) {
   if (type == "single_velocity")
     return std::make_unique<SingleVelocityContact>(read_materials(contact, material_count));
   if (type == "friction") return std::make_unique<FrictionContact>(read_friction(contact, material_count));
+  if (type == "nodal_svf") {
+    // Vaango requires <myu> and <use_svf>, and at most two materials.
+    const std::vector<int> mats = read_materials(contact, material_count);
+    if (mats.size() != 2) {
+      const DeckNode* list = contact.child("materials");
+      (list ? *list : contact)
+          .fail("nodal_svf acts between exactly two materials (<materials>), found " + std::to_string(mats.size()));
+    }
+    const double myu = contact.get_double("myu");
+    if (!(myu >= 0.0) || !std::isfinite(myu)) contact.require_child("myu").fail("myu must be >= 0");
+    return std::make_unique<NodalSvfContact>(mats[0], mats[1], myu, contact.require_child("use_svf").as_bool());
+  }
   if (type == "approach") return std::make_unique<ApproachContact>(read_friction(contact, material_count));
+  if (type == "friction_LR") {
+    const int steps = contact.get_int("one_or_two_step", 2);
+    if (steps != 1 && steps != 2) contact.require_child("one_or_two_step").fail("one_or_two_step must be 1 or 2");
+    return std::make_unique<FrictionLRContact>(read_friction(contact, material_count), steps);
+  }
   if (type == "friction_bard") {
     const double sep = contact.get_double("separation_factor", 9.9e99);
     if (!(sep > 0.0)) contact.require_child("separation_factor").fail("separation_factor must be > 0");

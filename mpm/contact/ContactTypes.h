@@ -70,6 +70,42 @@ class ApproachContact final : public ContactModel {
   double mu_, volume_constraint_;
 };
 
+// <type>friction_LR</type>: Coulomb friction where a logistic-regression
+// plane through the particles near the node separates the bodies
+// (FrictionLRContact.cpp).
+class FrictionLRContact final : public ContactModel {
+ public:
+  FrictionLRContact(const FrictionParameters& p, int one_or_two_step)
+      : materials_(p.materials), mu_(p.mu), volume_constraint_(p.volume_constraint), steps_(one_or_two_step) {}
+  std::string type() const override { return "friction_LR"; }
+  bool acts_on(ContactStage s) const override { return steps_ == 2 || s == ContactStage::Integrated; }
+  void exchange(ContactStage stage, ContactNodes& nodes) const override;
+
+ private:
+  std::vector<int> materials_;
+  double mu_, volume_constraint_;
+  int steps_;  // <one_or_two_step>, Vaango's default 2
+};
+
+// The unit normal n (from the points labelled -1 towards those labelled +1)
+// of the logistic-regression plane through points x (relative to the node),
+// VT eqs. 1.132-1.144 with penalties (lambda_n, lambda_n, lambda_n, 0).
+Vec3 logistic_regression_normal(const std::vector<Vec3>& x, const std::vector<double>& label, double lambda_n);
+
+// <type>nodal_svf</type>: drag between two materials (NodalSvfContact.cpp).
+class NodalSvfContact final : public ContactModel {
+ public:
+  NodalSvfContact(int alpha, int beta, double myu, bool use_svf)
+      : alpha_(alpha), beta_(beta), myu_(myu), use_svf_(use_svf) {}
+  std::string type() const override { return "nodal_svf"; }
+  void exchange(ContactStage stage, ContactNodes& nodes) const override;
+
+ private:
+  int alpha_, beta_;  // the two materials (<materials>, default 0 and 1)
+  double myu_;        // <myu> [N s/m^4]
+  bool use_svf_;      // <use_svf>
+};
+
 // <type>specified</type> (alias rigid): a master material whose node velocity
 // is prescribed, acting at the integrated stage only (VT eq. 1.110, 3.1).
 struct SpecifiedParameters {

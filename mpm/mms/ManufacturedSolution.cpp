@@ -138,13 +138,14 @@ const std::vector<std::string>& vaango_mms_names() {
   return n;
 }
 const std::vector<std::string>& implemented_mms_names() {
-  static const std::vector<std::string> n = {"AxisAligned", "GeneralizedVortex"};
+  static const std::vector<std::string> n = {"AxisAligned", "GeneralizedVortex", "ExpandingRing"};
   return n;
 }
 
 std::unique_ptr<ManufacturedSolution> make_mms(const std::string& name, const CnhMmsParams& model, double rho0) {
   if (name == "AxisAligned") return make_axis_aligned_mms(model, rho0);
   if (name == "GeneralizedVortex") return make_generalized_vortex_mms(model, rho0);
+  if (name == "ExpandingRing") return make_expanding_ring_mms(model, rho0);
   return nullptr;
 }
 

@@ -48,6 +48,12 @@ std::unique_ptr<ManufacturedSolution> make_axis_aligned_mms(const CnhMmsParams& 
 //   b_r = -R (A c pi cos(c pi t))^2 h + (mu/rho0) R (A sin(c pi t) h')^2 ... (see .cpp)
 std::unique_ptr<ManufacturedSolution> make_generalized_vortex_mms(const CnhMmsParams& model, double rho0);
 
+// ExpandingRing (Vaango initExpandingRing / extForceExpandingRing): a ring
+// 0.4 <= R <= 0.6 breathing radially, u = A sin(omega t) g(R) (X, Y, 0),
+// A = 0.1, omega = C pi / (2 rb), g quadratic with (R g)' = 0 at both faces
+// (formulas and the body force in ExpandingRing.cpp).
+std::unique_ptr<ManufacturedSolution> make_expanding_ring_mms(const CnhMmsParams& model, double rho0);
+
 // Names Vaango accepts for run_MMS_problem, and the implemented ones.
 const std::vector<std::string>& vaango_mms_names();
 const std::vector<std::string>& implemented_mms_names();

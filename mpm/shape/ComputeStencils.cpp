@@ -6,7 +6,9 @@
 #include "mpm/Particles.h"
 #include "mpm/shape/Interpolator.h"
 #include "mpm/shape/ShapeBspline.h"
+#include "mpm/shape/ShapeBsplineCubic.h"
 #include "mpm/shape/ShapeCpdi.h"
+#include "mpm/shape/ShapeCpti.h"
 #include "mpm/shape/ShapeGimp.h"
 #include "mpm/shape/ShapeLinear.h"
 
@@ -19,6 +21,8 @@ int stencil_width(InterpolatorKind k) {
     case InterpolatorKind::QuadraticBspline: return 27;
     case InterpolatorKind::Cpdi: return 64;
     case InterpolatorKind::CpGimp: return 64;
+    case InterpolatorKind::Cpti: return 32;
+    case InterpolatorKind::CubicBspline: return 64;
   }
   return 0;
 }
@@ -30,6 +34,8 @@ std::string interpolator_name(InterpolatorKind k) {
     case InterpolatorKind::QuadraticBspline: return "3rdorderBS";
     case InterpolatorKind::Cpdi: return "cpdi";
     case InterpolatorKind::CpGimp: return "cpgimp";
+    case InterpolatorKind::Cpti: return "cpti";
+    case InterpolatorKind::CubicBspline: return "4thorderBS";
   }
   return "?";
 }
@@ -42,8 +48,11 @@ template <InterpolatorKind K>
 bool fill_particle(const Particles& p, const NodeGrid& g, const InterpolatorSpec& spec, std::size_t i,
                    Stencils& s) {
   constexpr int W = K == InterpolatorKind::Linear ? 8
-                    : (K == InterpolatorKind::Cpdi || K == InterpolatorKind::CpGimp) ? 64
-                                                                                     : 27;
+                    : K == InterpolatorKind::Cpti ? 32
+                    : (K == InterpolatorKind::Cpdi || K == InterpolatorKind::CpGimp ||
+                       K == InterpolatorKind::CubicBspline)
+                        ? 64
+                        : 27;
   IntVec3 node[64];
   double w[64];
   Vec3 grad[64];
@@ -61,6 +70,11 @@ bool fill_particle(const Particles& p, const NodeGrid& g, const InterpolatorSpec
     if (!edges.allFinite() || edges.cwiseAbs().maxCoeff() > 4.0 * (g.n.maxCoeff() + 1)) return false;
     if (!cpdi_stencil(xi, edges, spec.cpdi_lcrit, g.h, node, w, grad)) return false;
     count = 64;
+  } else if constexpr (K == InterpolatorKind::Cpti) {
+    const Mat3 edges = p.F[i] * p.psize[i];
+    if (!edges.allFinite() || edges.cwiseAbs().maxCoeff() > 4.0 * (g.n.maxCoeff() + 1)) return false;
+    if (!cpti_stencil(xi, edges, spec.cpdi_lcrit, g.h, node, w, grad)) return false;
+    count = 32;
   } else {
     ShapeAxis ax[3];
     [[maybe_unused]] double l_cp[3] = {0.0, 0.0, 0.0};
@@ -80,6 +94,13 @@ bool fill_particle(const Particles& p, const NodeGrid& g, const InterpolatorSpec
       if constexpr (K == InterpolatorKind::Gimp) ax[d] = gimp_axis(xi[d], 0.5 * p.psize[i](d, d));
       if constexpr (K == InterpolatorKind::QuadraticBspline) ax[d] = quadratic_bspline_axis(xi[d]);
       if constexpr (K == InterpolatorKind::CpGimp) ax[d] = gimp_axis_any(xi[d], l_cp[d]);
+      if constexpr (K == InterpolatorKind::CubicBspline) {
+        // The support stays within the domain's faces, the node planes
+        // extra and n - 1 - extra (no extra-cell node; ShapeBsplineCubic.h).
+        const int lo = g.extra[d], top = g.n[d] - 1 - g.extra[d];
+        if (!(xi[d] >= lo && xi[d] <= top) || top - lo < 3) return false;
+        ax[d] = cubic_bspline_axis(xi[d], lo, top);
+      }
     }
     count = tensor_product(ax, g.h, node, w, grad);
     support_inside = true;
@@ -149,6 +170,8 @@ long compute_stencils(const Particles& p, const NodeGrid& g, const InterpolatorS
     case InterpolatorKind::QuadraticBspline: return fill<InterpolatorKind::QuadraticBspline>(p, g, spec, s);
     case InterpolatorKind::Cpdi: return fill<InterpolatorKind::Cpdi>(p, g, spec, s);
     case InterpolatorKind::CpGimp: return fill<InterpolatorKind::CpGimp>(p, g, spec, s);
+    case InterpolatorKind::Cpti: return fill<InterpolatorKind::Cpti>(p, g, spec, s);
+    case InterpolatorKind::CubicBspline: return fill<InterpolatorKind::CubicBspline>(p, g, spec, s);
   }
   return -1;
 }

@@ -3,8 +3,8 @@
 // per-particle stencils it produces.
 //
 // A stencil is stored flat: particle p owns the entries [p W, (p+1) W) of
-// node / w / grad, W = width(kind) (8 linear, 27 gimp and 3rdorderBS, 64
-// cpdi and cpgimp). Unused entries have w = 0, grad = 0 and a valid node, so the
+// node / w / grad, W = width(kind) (8 linear, 27 gimp and 3rdorderBS, 32
+// cpti, 64 cpdi, cpgimp and 4thorderBS). Unused entries have w = 0, grad = 0 and a valid node, so the
 // transfers (mpm/Transfers.h) loop over W entries without branches. The
 // interpolator is chosen once per material per step; the shape-function code
 // inside the loop is a template instance (no per-particle dispatch).
@@ -25,7 +25,9 @@ struct NodeGrid;
 // gimp_axis_any). Not a Vaango interpolator and not yet selectable from a
 // deck (MpmFlags accepts Vaango's names only); it is the candidate fix of
 // the uGIMP stall on AxisAligned (docs/mpm-convergence.md).
-enum class InterpolatorKind { Linear, Gimp, Cpdi, QuadraticBspline, CpGimp };
+// Cpti: one tetrahedron per particle (ShapeCpti.h). CubicBspline: Vaango's
+// 4thorderBS with its boundary-modified splines (ShapeBsplineCubic.h).
+enum class InterpolatorKind { Linear, Gimp, Cpdi, QuadraticBspline, CpGimp, Cpti, CubicBspline };
 
 struct InterpolatorSpec {
   InterpolatorKind kind = InterpolatorKind::Linear;
@@ -34,7 +36,8 @@ struct InterpolatorSpec {
 
 // Entries per particle.
 int stencil_width(InterpolatorKind k);
-// Vaango's name ("linear", "gimp", "cpdi", "3rdorderBS"; Tephra's "cpgimp").
+// Vaango's name ("linear", "gimp", "cpdi", "cpti", "3rdorderBS", "4thorderBS";
+// Tephra's "cpgimp").
 std::string interpolator_name(InterpolatorKind k);
 
 struct Stencils {

@@ -17,7 +17,7 @@ namespace {
 DeckNode& child(DeckNode& n, const std::string& name) {
   for (DeckNode& c : n.children)
     if (c.name == name) return c;
-  throw std::runtime_error("AA.ups has no <" + name + "> under <" + n.name + ">");
+  throw std::runtime_error("the MMS deck has no <" + name + "> under <" + n.name + ">");
 }
 }  // namespace
 
@@ -25,15 +25,15 @@ MmsRunResult run_axis_aligned(const MmsRunOptions& o) {
   const std::string& interpolator = o.interpolator;
   const int cells = o.cells, particles_per_cell_dir = o.particles_per_cell_dir;
   const double end_time = o.end_time;
-  auto deck = load_deck(shared_dir() + "/decks/inputs/MPM/AA.ups");
+  auto deck = load_deck(o.deck.empty() ? shared_dir() + "/decks/inputs/MPM/AA.ups" : o.deck);
   DeckNode& root = deck->root;
   child(child(root, "MPM"), "interpolator").text = interpolator;
   DeckNode& box = child(child(child(root, "Grid"), "Level"), "Box");
   const std::string c = std::to_string(cells);
-  child(box, "resolution").text = "[" + c + "," + c + "," + c + "]";
+  child(box, "resolution").text = "[" + c + "," + c + "," + (o.planar ? std::string("1") : c) + "]";
   DeckNode& mat = child(child(child(root, "MaterialProperties"), "MPM"), "material");
   const std::string r = std::to_string(particles_per_cell_dir);
-  child(child(mat, "geom_object"), "res").text = "[" + r + "," + r + "," + r + "]";
+  child(child(mat, "geom_object"), "res").text = "[" + r + "," + r + "," + (o.planar ? std::string("1") : r) + "]";
   const DeckNode& time = root.require_child("Time");
   const double multiplier =
       o.timestep_multiplier > 0.0 ? o.timestep_multiplier : time.get_double("timestep_multiplier");

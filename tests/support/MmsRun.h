@@ -11,6 +11,12 @@
 namespace tephra::test {
 
 struct MmsRunOptions {
+  // Another manufactured-solution deck (absolute path), with the same
+  // elements as AA.ups; empty: AA.ups. `planar`: one cell and one particle
+  // in z (resolution [cells, cells, 1], res [ppc, ppc, 1]), for the
+  // plane-strain decks such as inputs/mpm/expanding_ring_mms.ups.
+  std::string deck;
+  bool planar = false;
   std::string interpolator = "gimp";
   int cells = 16;               // cells per side of the unit cube
   double end_time = 0.02;       // the deck's maxTime

@@ -230,8 +230,6 @@ TEST(GeometryDeck, UnsupportedPiecesAreMissingFeatures) {
     expect_missing_feature(std::string("<geom_object><") + piece + "><radius>1</radius></" + piece +
                                "></geom_object>\n",
                            std::string("<") + piece + ">");
-  expect_missing_feature("<geom_object><file><name>pts.txt</name></file></geom_object>\n",
-                         "<geom_object><file>");
   expect_missing_feature("<geom_object><image><name>a.raw</name></image></geom_object>\n",
                          "<geom_object><image>");
 }

@@ -94,6 +94,8 @@ std::vector<ContactModelP> conserving_models(int materials) {
   out.push_back(std::make_unique<FrictionBardContact>(p, 9.9e99, 2));
   out.push_back(std::make_unique<FrictionBardContact>(p, 0.5, 2));  // with the separation test
   out.push_back(std::make_unique<ApproachContact>(p));
+  out.push_back(std::make_unique<NodalSvfContact>(0, materials - 1, 50.0, true));
+  out.push_back(std::make_unique<NodalSvfContact>(0, materials - 1, 50.0, false));
   return out;
 }
 
@@ -283,6 +285,39 @@ void throws(const std::string& xml) {
   EXPECT_THROW(parse_contact(deck(xml)->root.require_child("contact"), 2), E) << xml;
 }
 
+// nodal_svf (Vaango NodalSVFContact): at a node where both materials have
+// mass, f_b = k (v_a - v_b), k = myu V_cell phi_a phi_b (use_svf) or
+// myu V_cell, phi = w V_g / V_cell, and v_b += f_b dt / (w m_b),
+// v_a -= f_b dt / (w m_a), w = 2^(boundary directions of the node).
+// Nodes with one material are left alone.
+TEST(MpmContactModels, NodalSvfDragIsTheClosedForm) {
+  for (bool use_svf : {true, false}) {
+    RandomNodes r(2, 31u, ContactStage::Integrated);
+    std::vector<Vec3> va0 = *r.nodes.velocity[0], vb0 = *r.nodes.velocity[1];
+    const double myu = 50.0;
+    NodalSvfContact(0, 1, myu, use_svf).exchange(ContactStage::Integrated, r.nodes);
+    const double vc = r.nodes.cell_volume();
+    int both = 0;
+    for (std::size_t g = 0; g < r.nodes.nodes(); ++g) {
+      const double ma = r.grids[0].mass[g], mb = r.grids[1].mass[g];
+      const Vec3 va = (*r.nodes.velocity[0])[g], vb = (*r.nodes.velocity[1])[g];
+      if (!(ma > 0 && mb > 0)) {
+        EXPECT_EQ(va, va0[g]);
+        EXPECT_EQ(vb, vb0[g]);
+        continue;
+      }
+      ++both;
+      const std::size_t i = g % 4, j = (g / 4) % 3, k = g / 12;  // n = (4, 3, 5)
+      const double w = (i == 0 || i == 3 ? 2.0 : 1.0) * (j == 0 || j == 2 ? 2.0 : 1.0) * (k == 0 || k == 4 ? 2.0 : 1.0);
+      const double kk = myu * vc * (use_svf ? (w * r.grids[0].volume[g] / vc) * (w * r.grids[1].volume[g] / vc) : 1.0);
+      const Vec3 fb = kk * (va0[g] - vb0[g]);
+      EXPECT_NEAR((vb - (vb0[g] + fb * r.nodes.dt / (w * mb))).norm(), 0.0, 1e-14 * (1 + vb.norm()));
+      EXPECT_NEAR((va - (va0[g] - fb * r.nodes.dt / (w * ma))).norm(), 0.0, 1e-14 * (1 + va.norm()));
+    }
+    EXPECT_GT(both, 5);
+  }
+}
+
 TEST(MpmContactModels, ParsingAcceptsVaangoParametersAndRejectsTheRest) {
   EXPECT_EQ(parse_contact(deck("<contact><type>null</type></contact>")->root.require_child("contact"), 2), nullptr);
   // Vaango's null contact ignores <materials> (inputs/MPM/AA.ups lists absent ones).
@@ -309,8 +344,25 @@ TEST(MpmContactModels, ParsingAcceptsVaangoParametersAndRejectsTheRest) {
   EXPECT_FALSE(bard1->acts_on(ContactStage::Interpolated));
   EXPECT_TRUE(bard1->acts_on(ContactStage::Integrated));
 
-  throws<MissingFeature>("<contact><type>friction_LR</type><mu>0.1</mu></contact>");
-  throws<MissingFeature>("<contact><type>nodal_svf</type></contact>");
+  auto lr = parse_contact(deck("<contact><type>friction_LR</type><mu>0.1</mu><one_or_two_step>1</one_or_two_step>"
+                               "</contact>")
+                              ->root.require_child("contact"),
+                          2);
+  ASSERT_TRUE(lr);
+  EXPECT_EQ(lr->type(), "friction_LR");
+  EXPECT_FALSE(lr->acts_on(ContactStage::Interpolated));
+  throws<DeckError>("<contact><type>friction_LR</type></contact>");  // mu required
+  throws<DeckError>("<contact><type>friction_LR</type><mu>0.1</mu><myu>1</myu></contact>");
+  auto svf = parse_contact(
+      deck("<contact><type>nodal_svf</type><myu>1e3</myu><use_svf>true</use_svf></contact>")->root.require_child(
+          "contact"),
+      2);
+  ASSERT_TRUE(svf);
+  EXPECT_EQ(svf->type(), "nodal_svf");
+  throws<DeckError>("<contact><type>nodal_svf</type><use_svf>true</use_svf></contact>");  // myu required
+  throws<DeckError>("<contact><type>nodal_svf</type><myu>1</myu></contact>");            // use_svf required
+  throws<DeckError>("<contact><type>nodal_svf</type><myu>1</myu><use_svf>1</use_svf><mu>0.1</mu></contact>");
+  throws<DeckError>("<contact><type>nodal_svf</type><myu>-1</myu><use_svf>true</use_svf></contact>");
   throws<MissingFeature>(
       "<contact><type>friction</type><mu>0.1</mu><use_hardcoded_normals>true</use_hardcoded_normals></contact>");
   throws<DeckError>("<contact><type>stick</type></contact>");
@@ -330,7 +382,7 @@ TEST(MpmContactModels, ParsingAcceptsVaangoParametersAndRejectsTheRest) {
   }
   EXPECT_EQ(contact_types(),
             (std::vector<std::string>{"null", "single_velocity", "friction", "friction_bard", "approach", "specified",
-                                      "rigid"}));
+                                      "rigid", "nodal_svf", "friction_LR"}));
 }
 
 TEST(MpmContactModels, SpecifiedReadsAVelocityTable) {

@@ -26,7 +26,12 @@ TEST(MpmDeckParsing, FlagsAcceptDefaultsAndRejectTheRest) {
                                 ->root.child("MPM"))
                 .interpolator.cpdi_lcrit,
             0.9);
-  EXPECT_THROW(parse_mpm_flags(deck("<MPM><interpolator>cpti</interpolator></MPM>")->root.child("MPM")),
+  EXPECT_EQ(parse_mpm_flags(deck("<MPM><interpolator>cpti</interpolator></MPM>")->root.child("MPM")).interpolator.kind,
+            InterpolatorKind::Cpti);
+  EXPECT_EQ(
+      parse_mpm_flags(deck("<MPM><interpolator>4thorderBS</interpolator></MPM>")->root.child("MPM")).interpolator.kind,
+      InterpolatorKind::CubicBspline);
+  EXPECT_THROW(parse_mpm_flags(deck("<MPM><interpolator>fast_cpdi</interpolator></MPM>")->root.child("MPM")),
                MissingFeature);
   EXPECT_THROW(parse_mpm_flags(deck("<MPM><cpdi_lcrit>-1</cpdi_lcrit></MPM>")->root.child("MPM")), DeckError);
   EXPECT_THROW(parse_mpm_flags(deck("<MPM><interpolator>gimpy</interpolator></MPM>")->root.child("MPM")),

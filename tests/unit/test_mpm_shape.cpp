@@ -22,7 +22,7 @@ namespace tephra {
 namespace {
 
 const InterpolatorKind kAll[] = {InterpolatorKind::Linear, InterpolatorKind::Gimp, InterpolatorKind::Cpdi,
-                                 InterpolatorKind::QuadraticBspline};
+                                 InterpolatorKind::QuadraticBspline, InterpolatorKind::Cpti};
 
 // A non-cubic grid with an offset origin, particles in its interior (two node
 // layers from the edge) with random sizes and deformation gradients.

@@ -93,12 +93,12 @@ double run(MpmComponent& c, double T) {
 
 const double kTheta = 0.3, kG = 10.0;
 
-std::unique_ptr<MpmComponent> inclined_plane(double mu) {
+std::unique_ptr<MpmComponent> inclined_plane(double mu, const std::string& type = "friction") {
   const double h = 0.025;
   const std::string mats = box_material(1e4, 1e8, 5e7, Vec3(0, 0, 0), Vec3(0.4, h, h), Vec3::Zero()) +
                            box_material(1e3, 1e7, 5e6, Vec3(0.1, 0, h), Vec3(0.2, h, 3 * h), Vec3::Zero());
   std::ostringstream contact;
-  contact << "<contact><type>friction</type><mu>" << mu << "</mu><materials>[0,1]</materials></contact>";
+  contact << "<contact><type>" << type << "</type><mu>" << mu << "</mu><materials>[0,1]</materials></contact>";
   const std::string bcs =
       "<Face side='z-'><BCType id='0' var='Dirichlet' label='Velocity'><value>[0,0,0]</value></BCType></Face>"
       "<Face side='y-'><BCType id='all' var='symmetry' label='Symmetric'></BCType></Face>"
@@ -128,6 +128,39 @@ TEST(MpmContact, BlockSticksWhenMuExceedsTanTheta) {
   std::printf("mu = 0.5: u = (%.3g, %.3g, %.3g), g sin(theta) T = %.3g\n", u[0], u[1], u[2],
               kG * std::sin(kTheta) * T);
   EXPECT_LT(std::abs(u[0]), 0.05 * kG * std::sin(kTheta) * T) << "u_x = " << u[0];
+  EXPECT_LT(std::abs(u[2]), 0.05 * kG * std::cos(kTheta) * T) << "u_z = " << u[2];
+}
+
+// friction_LR (logistic-regression separation, Nairn et al. 2020): the same
+// two oracles on the same incline. Frictionless, the block reaches
+// u_x = 0.14622 against g sin(theta) T = 0.14776 (1.04% low), not to
+// round-off as with friction's grid normal: at the interface nodes near the
+// block's two ends the point cloud is a corner (slab particles on both sides
+// in x, block particles on one), and the regression plane there tilts from
+// the slab's surface, so a frictionless normal exchange there also takes x
+// momentum (a likely cause, not isolated further). Bound: 2%, and below the
+// exact value (contact must not accelerate the block). Sticking is tighter
+// than with friction: |u_x| = 2.3e-5 against 1.7e-3.
+TEST(MpmContact, FrictionLRFrictionlessBlockSlidesAtGSinTheta) {
+  auto c = inclined_plane(0.0, "friction_LR");
+  const double T = run(*c, 0.05);
+  const Sums b = sums(c->materials()[1]);
+  const double u_exact = kG * std::sin(kTheta) * T;
+  const Vec3 u = b.momentum / b.mass;
+  std::printf("friction_LR mu = 0: u_x = %.12g, g sin(theta) t = %.12g, u_z = %.3g\n", u[0], u_exact, u[2]);
+  EXPECT_NEAR(u[0], u_exact, 0.02 * u_exact);
+  EXPECT_LT(u[0], u_exact);
+  EXPECT_LT(std::abs(u[2]), 0.05 * kG * std::cos(kTheta) * T) << "u_z = " << u[2];
+}
+
+TEST(MpmContact, FrictionLRBlockSticksWhenMuExceedsTanTheta) {
+  auto c = inclined_plane(0.5, "friction_LR");
+  const double T = run(*c, 0.05);
+  const Sums b = sums(c->materials()[1]);
+  const Vec3 u = b.momentum / b.mass;
+  std::printf("friction_LR mu = 0.5: u = (%.3g, %.3g, %.3g), g sin(theta) T = %.3g\n", u[0], u[1], u[2],
+              kG * std::sin(kTheta) * T);
+  EXPECT_LT(std::abs(u[0]), 1e-3 * kG * std::sin(kTheta) * T) << "u_x = " << u[0];  // observed 1.5e-4 of it
   EXPECT_LT(std::abs(u[2]), 0.05 * kG * std::cos(kTheta) * T) << "u_z = " << u[2];
 }
 
@@ -165,6 +198,10 @@ TEST(MpmContact, ClosedSystemsConserveMomentumToRoundOff) {
               friction_transfer, single_error, single_transfer);
   EXPECT_LT(friction_error, 1e-13);
   EXPECT_GT(friction_transfer, 0.05 * 1e3 * 0.2 * 0.2 * 0.05 * va.norm()) << "no momentum reached B";
+  const auto [lr_error, lr_transfer] = impact("<contact><type>friction_LR</type><mu>0.3</mu></contact>", va);
+  std::printf("friction_LR: |dP|/sum m|v| = %.3g, momentum to B %.3g\n", lr_error, lr_transfer);
+  EXPECT_LT(lr_error, 1e-13);
+  EXPECT_GT(lr_transfer, 0.05 * 1e3 * 0.2 * 0.2 * 0.05 * va.norm()) << "no momentum reached B";
 }
 
 }  // namespace
