@@ -13,7 +13,7 @@ const char* const kParticleLabels[] = {"p.x", "p.particleID", "p.volume", "p.vel
 const char* const kNodeLabels[] = {"g.mass", "g.volume", "g.velocity", "g.velocity_star", "g.acceleration",
                                    "g.externalforce", "g.internalforce", "g.stressFS"};
 const char* const kReductionLabels[] = {"KineticEnergy", "StrainEnergy", "TotalMass", "TotalMomentum",
-                                        "CenterOfMassPosition", "MMSDisplacementErrorL2"};
+                                        "CenterOfMassPosition", "CenterOfMassVelocity", "MMSDisplacementErrorL2"};
 
 void append(std::vector<double>& out, double v) { out.push_back(v); }
 void append(std::vector<double>& out, const Vec3& v) { out.insert(out.end(), v.data(), v.data() + 3); }
@@ -164,7 +164,7 @@ void MpmComponent::fill_output(const std::set<std::string>& labels, OutputFrame&
 
 // As Vaango sums them at the end of a step (new particle state):
 //   KineticEnergy = sum 1/2 m |v|^2, TotalMass = sum m, TotalMomentum = sum m v,
-//   CenterOfMassPosition = sum m x / sum m,
+//   CenterOfMassPosition = sum m x / sum m, CenterOfMassVelocity = sum m v / sum m,
 //   StrainEnergy = sum W(F_p) V0_p: the stored energy of the hyperelastic model
 //   (Vaango's CompNeoHook sums the same W(F) V0), not an integral of sigma:d.
 std::map<std::string, std::vector<double>> MpmComponent::reductions(const std::set<std::string>& labels) const {
@@ -191,6 +191,10 @@ std::map<std::string, std::vector<double>> MpmComponent::reductions(const std::s
   if (labels.count("CenterOfMassPosition")) {
     const Vec3 c = mass > 0 ? Vec3(mx / mass) : Vec3::Zero();
     out["CenterOfMassPosition"] = {c[0], c[1], c[2]};
+  }
+  if (labels.count("CenterOfMassVelocity")) {
+    const Vec3 v = mass > 0 ? Vec3(mom / mass) : Vec3::Zero();
+    out["CenterOfMassVelocity"] = {v[0], v[1], v[2]};
   }
   for (int f : setup_.flags.boundary_traction_faces) {
     const std::string force = std::string("BndyForce_") + kFaceNames[f];
