@@ -11,6 +11,7 @@
 #include "core/base/PhaseTimers.h"
 #include "mpm/ArtificialViscosity.h"
 #include "mpm/DeformationGradient.h"
+#include "mpm/StrainWork.h"
 #include "mpm/Transfers.h"
 #include "mpm/contact/ContactNormals.h"
 
@@ -54,6 +55,7 @@ void MpmComponent::initialize() {
   stable_dt_ = std::numeric_limits<double>::infinity();
   for (const MpmMaterial& m : setup_.materials) stable_dt_ = std::min(stable_dt_, material_stable_timestep(m));
   time_ = 0.0;
+  acc_strain_energy_ = 0.0;
 }
 
 // Vaango's explicit rule (UCNH::computeStressTensor, called by SerialMPM's
@@ -106,6 +108,7 @@ void MpmComponent::project_to_grid(MpmMaterial& m, int step, const char* phase) 
 void MpmComponent::update_stress(MpmMaterial& m, int step, double dt) {
   PhaseTimers::Scope t(phase_timers(), "MPM: compute stress tensor");
   Particles& p = m.particles;
+  acc_strain_energy_ += half_stress_power(p, m.L, dt);  // sigma_n : d V_n dt / 2 (AccStrainEnergy)
   for (std::size_t i = 0; i < p.size(); ++i) {
     const double J = p.F[i].determinant();
     if (!(J > 0.0) || !std::isfinite(J)) {
@@ -131,6 +134,7 @@ void MpmComponent::update_stress(MpmMaterial& m, int step, double dt) {
   if (bad >= 0) fail_particle(m, std::size_t(bad), step, "compute stress tensor",
                               "constitutive model '" + m.model->type() +
                                   "' rejected the state (non-finite stress or no real wave speed)");
+  acc_strain_energy_ += half_stress_power(p, m.L, dt);  // sigma_{n+1} : d V_{n+1} dt / 2
   if (setup_.flags.artificial_viscosity) artificial_viscosity(m);
 }
 

@@ -101,6 +101,8 @@ class MpmComponent final : public Component {
   // for the faces of MpmFlags::boundary_traction_faces; from the last step.
   std::array<Vec3, 6> boundary_force_{};
   std::array<double, 6> boundary_area_{};
+  // AccStrainEnergy: the stress work sum over the steps (mpm/StrainWork.h); restart state.
+  double acc_strain_energy_ = 0.0;
 };
 
 // Reads the MPM parts of the deck (<MPM>, <PhysicalConstants>, <MaterialProperties><MPM>,

@@ -8,12 +8,13 @@ namespace tephra {
 namespace {
 
 const char* const kParticleLabels[] = {"p.x", "p.particleID", "p.volume", "p.velocity", "p.stress",
-                                       "p.mass", "p.deformationMeasure", "p.displacement",
+                                       "p.mass", "p.deformationMeasure", "p.deformationGradient", "p.displacement",
                                        "p.temperature", "p.color", "p.externalforce", "p.size", "p.q"};
 const char* const kNodeLabels[] = {"g.mass", "g.volume", "g.velocity", "g.velocity_star", "g.acceleration",
                                    "g.externalforce", "g.internalforce", "g.stressFS"};
 const char* const kReductionLabels[] = {"KineticEnergy", "StrainEnergy", "TotalMass", "TotalMomentum",
-                                        "CenterOfMassPosition", "CenterOfMassVelocity", "MMSDisplacementErrorL2"};
+                                        "CenterOfMassPosition", "CenterOfMassVelocity", "AccStrainEnergy",
+                                        "MMSDisplacementErrorL2"};
 
 void append(std::vector<double>& out, double v) { out.push_back(v); }
 void append(std::vector<double>& out, const Vec3& v) { out.insert(out.end(), v.data(), v.data() + 3); }
@@ -123,6 +124,8 @@ void MpmComponent::fill_output(const std::set<std::string>& labels, OutputFrame&
     if (want("p.stress")) b.fields.push_back(field("p.stress", m.index, p.stress));
     if (want("p.mass")) b.fields.push_back(field("p.mass", m.index, p.mass));
     if (want("p.deformationMeasure")) b.fields.push_back(field("p.deformationMeasure", m.index, p.F));
+    // Newer Vaango's name of the same F (pDefGradLabel).
+    if (want("p.deformationGradient")) b.fields.push_back(field("p.deformationGradient", m.index, p.F));
     if (want("p.displacement")) b.fields.push_back(field("p.displacement", m.index, p.displacement));
     if (want("p.temperature")) b.fields.push_back(field("p.temperature", m.index, p.temperature));
     if (want("p.color")) b.fields.push_back(field("p.color", m.index, p.color));
@@ -192,6 +195,9 @@ std::map<std::string, std::vector<double>> MpmComponent::reductions(const std::s
     const Vec3 c = mass > 0 ? Vec3(mx / mass) : Vec3::Zero();
     out["CenterOfMassPosition"] = {c[0], c[1], c[2]};
   }
+  // AccStrainEnergy = sum over the steps of sigma_avg : d V_avg dt (Vaango's accumulated
+  // per-step StrainEnergy of its hypo models; mpm/StrainWork.h).
+  if (labels.count("AccStrainEnergy")) out["AccStrainEnergy"] = {acc_strain_energy_};
   if (labels.count("CenterOfMassVelocity")) {
     const Vec3 v = mass > 0 ? Vec3(mom / mass) : Vec3::Zero();
     out["CenterOfMassVelocity"] = {v[0], v[1], v[2]};
@@ -216,6 +222,7 @@ void MpmComponent::save_state(StateArchive& a) const {
   }
   a.put_scalar("mpm.stable_dt", stable_dt_);
   a.put_scalar("mpm.time", time_);
+  a.put_scalar("mpm.acc_strain_energy", acc_strain_energy_);
   std::vector<double> bndy;
   for (int f = 0; f < 6; ++f) {
     append(bndy, boundary_force_[f]);
@@ -246,6 +253,7 @@ void MpmComponent::load_state(const StateArchive& a) {
   }
   stable_dt_ = a.scalar("mpm.stable_dt");
   time_ = a.scalar("mpm.time");
+  acc_strain_energy_ = a.scalar("mpm.acc_strain_energy");
   const std::vector<double>& bndy = a.doubles("mpm.boundary_force_area");
   if (bndy.size() != 24) throw RuntimeFailure("checkpoint array 'mpm.boundary_force_area' has a bad size");
   for (int f = 0; f < 6; ++f) {

@@ -4,7 +4,10 @@
 // Mie-Grueneisen, T0 = 696 K) pulled by a rigid piston at 40 m/s through `rigid`
 // contact. The particle's velocity gradient is set kinematically by the piston node
 // (z = 0.01 m, v = 40 m/s) and the symmetry plane: l_zz = 40/0.01 = 4000 /s while
-// the particle is in the first cell; its lateral faces are free (uniaxial stress).
+// the piston particle (z0 = 0.015 m) is in the second cell, i.e. for
+// 0.005/40 = 1.25e-4 s; then the piston leaves the node, the specimen is released
+// and rings elastically (the deck runs to 3e-4 s; Vaango's grid is the same). The
+// lateral faces are free (uniaxial stress). The test covers the loading, 1.2e-4 s.
 // Oracle: the returned deviator lies on the JC law at the particle's own state,
 //   q = sqrt(3/2)|s| = [A + B eps_p^n][1 + C ln(eps_p_dot/1)][1 - T*^m]   (VT 10.2-10.3),
 // with T the temperature of the return: the particle temperature plus this step's
@@ -76,13 +79,13 @@ TEST(MetalDecks, A4AdiabaticCopperFollowsTheJohnsonCookLaw) {
   };
   double worst_law = 0, worst_ep = 0, last_rate = 0, last_ep = 0;
   int checks = 0;
-  const int steps = run_deck("adiCuJC4000s696K.ups", 2.4e-4, [&](double t, double dt, const MpmComponent& c) {
+  const int steps = run_deck("adiCuJC4000s696K.ups", 1.2e-4, [&](double t, double dt, const MpmComponent& c) {
     const MpmMaterial& mat = c.materials()[1];
     const Particles& p = mat.particles;
     ASSERT_EQ(p.size(), 1u);
     ASSERT_EQ(mat.model->type(), "elastic_plastic");
     const double ep = p.history[0][0], rate = p.history[1][0];
-    if (t <= 0 || ep < 0.01) return;
+    if (t <= 0 || ep < 0.01 || !(rate > 0)) return;  // plastic steps after yield
     const double q = von_mises(p.stress[0]);
     // The return's temperature lies in [T_p, T_p + heating dt] (see the top).
     const double T_lo = p.temperature[0], T_hi = p.temperature[0] + mat.heating[0] * dt;
@@ -100,7 +103,7 @@ TEST(MetalDecks, A4AdiabaticCopperFollowsTheJohnsonCookLaw) {
   EXPECT_GT(checks, 100);
   EXPECT_LT(worst_law, 1e-9);        // the return's own tolerance is 1e-12 (deck)
   EXPECT_LT(worst_ep, 2e-3);          // small-strain elastic split; observed above
-  EXPECT_GT(last_ep, 0.8);            // 4000 /s for 2.4e-4 s: eps ~ 0.96
+  EXPECT_GT(last_ep, 0.45);           // 4000 /s for 1.2e-4 s: eps ~ 0.48
   EXPECT_NEAR(last_rate / 4000.0, 1.0, 0.02);
 }
 
