@@ -16,11 +16,11 @@
 // the imposed 4000 /s and eps_p to ln F_zz - q/E (uniaxial stress, isochoric flow).
 //
 // A5, MPM/Impact/cylinderImpact_A_JC.ups: the Taylor impact (elastic_plastic_hp,
-// JC flow, JC damage, 26.7k particles), the first 3 us of the deck's 80 us:
+// JC flow, JC damage, 26.7k particles), the first 1.5 us of the deck's 80 us, with two
+// edits explained at the test (time-step multiplier, contact material list):
 // energy balance KE + SE + W_p = KE_0 minus the kinetic energy the rigid wall
 // removes (the nodes in contact are set to the wall velocity: an inelastic
-// collision of the first node layer, bounded by the KE of the mass within one cell
-// of the wall, ~1.5 % of KE_0 over the window; observed below), the x <-> z mirror
+// collision of the first node layer, ~2 % of KE_0; see the test), the x <-> z mirror
 // symmetry of the quarter model, CenterOfMassVelocity = TotalMomentum/TotalMass,
 // and damage D = int eps_p_dot/eps_f >= 0 growing only where eps_p grows.
 #include <gtest/gtest.h>
@@ -31,6 +31,9 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "core/deck/DeckLoader.h"
 #include "mpm/MpmComponent.h"
@@ -50,8 +53,14 @@ double von_mises(const Mat3& s) {
 
 // The deck's step rule (timestep_multiplier, delt_max) up to `end`; check(t, component) every step.
 template <class Check>
-int run_deck(const std::string& name, double end, Check&& check) {
+int run_deck(const std::string& name, double end, Check&& check,
+             const std::vector<std::pair<std::vector<std::string>, std::string>>& edits = {}) {
   auto deck = load_deck(deck_path(name));
+  for (const auto& [path, text] : edits) {  // set the text of an element given by its path
+    const DeckNode* n = &deck->root;
+    for (const std::string& e : path) n = &n->require_child(e);
+    const_cast<DeckNode*>(n)->text = text;
+  }
   const DeckNode& time = deck->root.require_child("Time");
   const double multiplier = time.get_double("timestep_multiplier");
   const double delt_max = time.get_double("delt_max");
@@ -124,13 +133,21 @@ TEST(MetalDecks, A4RunsToTheEndThroughTheExecutable) {
 }
 
 TEST(MetalDecks, A5TaylorImpactEnergySymmetryAndDamage) {
-  const double end = 3.0e-6;
-  double ke0 = 0, wp = 0, worst_sym = 0, worst_com = 0, max_loss = 0;
+  const double end = 1.5e-6;  // ~35 steps of the deck's 80 us (the wave has crossed ~7 mm)
+  double ke0 = 0, wp = 0, worst_sym = 0, worst_com = 0, max_loss = -1, min_loss = 1, last_loss = 0;
   std::map<long long, std::size_t> index;   // particle id -> row
   std::map<std::size_t, std::size_t> mirror;  // row -> row of the x <-> z mirror particle
   std::vector<double> ep_prev, d_prev;
   bool damage_ok = true;
   double damage_max = 0;
+  // Two edits (docs/models/plasticity.md, "Deck A5"): the deck's timestep_multiplier 0.8
+  // exceeds the 3-D CFL limit of lumped-mass linear MPM, 1/sqrt(3) = 0.577 (round-off
+  // grows x3 per step in free flight), so 0.4; and <materials>[0] names only the wall,
+  // which under the material-list semantics of the contact models leaves the cylinder
+  // out of the contact, so [0,1] (Vaango's older SpecifiedBodyContact acted on every
+  // material). Everything else is the deck's.
+  const std::vector<std::pair<std::vector<std::string>, std::string>> edits = {
+      {{"Time", "timestep_multiplier"}, "0.4"}, {{"MaterialProperties", "MPM", "contact", "materials"}, "[0,1]"}};
   run_deck("Impact/cylinderImpact_A_JC.ups", end, [&](double t, double, const MpmComponent& c) {
     const MpmMaterial& mat = c.materials()[1];
     const Particles& p = mat.particles;
@@ -166,18 +183,24 @@ TEST(MetalDecks, A5TaylorImpactEnergySymmetryAndDamage) {
       worst_sym = std::max(worst_sym, (p.x[i] - Vec3(p.x[j][2], p.x[j][1], p.x[j][0])).norm() / 3.24e-2);
     }
     max_loss = std::max(max_loss, (ke0 - ke - se - wp) / ke0);
+    min_loss = std::min(min_loss, (ke0 - ke - se - wp) / ke0);
+    last_loss = (ke0 - ke - se - wp) / ke0;
     const auto r = c.reductions({"TotalMass", "TotalMomentum", "CenterOfMassVelocity"});
     const double M = r.at("TotalMass")[0];
     for (int d = 0; d < 3; ++d)
       worst_com = std::max(worst_com, std::abs(r.at("CenterOfMassVelocity")[d] * M - r.at("TotalMomentum")[d]) /
                                           (227.0 * M));
-  });
-  std::printf("A5 (%.1f us): KE0 %.4e J, max energy loss (KE0 - KE - SE - Wp)/KE0 = %.4e, plastic work %.4e J, "
-              "max mirror asymmetry %.2e L0, max damage %.3e\n",
-              end * 1e6, ke0, max_loss, wp, worst_sym, damage_max);
+  }, edits);
+  std::printf("A5 (%.1f us): KE0 %.4e J, energy loss (KE0 - KE - SE - Wp)/KE0 min %.4e max %.4e last %.4e, "
+              "plastic work %.4e J, max mirror asymmetry %.2e L0, max damage %.3e\n",
+              end * 1e6, ke0, min_loss, max_loss, last_loss, wp, worst_sym, damage_max);
   EXPECT_GT(wp, 0.0);
-  EXPECT_GE(max_loss, -1e-3);  // no energy created
-  EXPECT_LT(max_loss, 0.03);   // the wall's inelastic node layer (see the top)
+  // The wall stops the first node layer at once: an inelastic collision losing the KE of
+  // that node's mass, sum of (1 - d/h) over the bottom particle layers (d = 0.06, 0.42,
+  // 0.77 mm below h = 1.057 mm: 1.83 layers of the 92 at res 3) = 2.0 % of KE0 (observed
+  // 2.1 % after step 1); the next layers add as the foot spreads (observed 2.7 % at 1.5 us).
+  EXPECT_GT(min_loss, 0.0);    // never energy created
+  EXPECT_LT(max_loss, 0.035);
   EXPECT_LT(worst_sym, 1e-9);
   EXPECT_LT(worst_com, 1e-12);
   EXPECT_TRUE(damage_ok);
