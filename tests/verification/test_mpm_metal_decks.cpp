@@ -30,12 +30,16 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <map>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include <Eigen/LU>
+
 #include "core/deck/DeckLoader.h"
+#include "models/solid/ElasticPlastic.h"
 #include "mpm/MpmComponent.h"
 #include "tests/support/TestPaths.h"
 
@@ -53,9 +57,18 @@ double von_mises(const Mat3& s) {
 
 // The deck's step rule (timestep_multiplier, delt_max) up to `end`; check(t, component) every step.
 template <class Check>
+int run_loaded_deck(std::unique_ptr<Deck> deck, double end, Check&& check,
+                    const std::vector<std::pair<std::vector<std::string>, std::string>>& edits = {});
+
+template <class Check>
 int run_deck(const std::string& name, double end, Check&& check,
              const std::vector<std::pair<std::vector<std::string>, std::string>>& edits = {}) {
-  auto deck = load_deck(deck_path(name));
+  return run_loaded_deck(load_deck(deck_path(name)), end, check, edits);
+}
+
+template <class Check>
+int run_loaded_deck(std::unique_ptr<Deck> deck, double end, Check&& check,
+                    const std::vector<std::pair<std::vector<std::string>, std::string>>& edits) {
   for (const auto& [path, text] : edits) {  // set the text of an element given by its path
     const DeckNode* n = &deck->root;
     for (const std::string& e : path) n = &n->require_child(e);
@@ -114,6 +127,54 @@ TEST(MetalDecks, A4AdiabaticCopperFollowsTheJohnsonCookLaw) {
   EXPECT_LT(worst_ep, 2e-3);          // small-strain elastic split; observed above
   EXPECT_GT(last_ep, 0.45);           // 4000 /s for 1.2e-4 s: eps ~ 0.48
   EXPECT_NEAR(last_rate / 4000.0, 1.0, 0.02);
+}
+
+// The MTS sister deck (Vaango's adiCuMTS4000s696K.ups): A4 with the flow and shear
+// blocks of MaterialData/MTSPlasticETPCu.xml and MTSShearETPCu.xml (the same constants,
+// deck spelling "mts_model"). Oracle: the returned q equals the MTS law of VT eq.
+// 10.16-10.23 evaluated by the model's own flow object at the particle's state
+// (eps_p, eps_p_dot, T, mu, sigma_e from its history), and sigma_e grows with eps_p.
+TEST(MetalDecks, A4MtsSisterDeckFollowsTheMtsLaw) {
+  std::ifstream in(deck_path("adiCuJC4000s696K.ups"));
+  std::string xml((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::size_t a = xml.find("<flow_model type=\"johnson_cook\">");
+  const std::size_t b = xml.find("</shear_modulus_model>") + std::string("</shear_modulus_model>").size();
+  ASSERT_NE(a, std::string::npos);
+  xml.replace(a, b - a,
+              R"(<include href="MaterialData/MTSPlasticETPCu.xml"/>
+                 <include href="MaterialData/MTSShearETPCu.xml"/>)");
+  auto deck = load_deck_from_string(xml, "adiCuMTS4000s696K.ups", test::shared_dir() + "/decks/inputs/MPM");
+  double worst = 0, prev_se = 0, last_ep = 0;
+  int checks = 0;
+  run_loaded_deck(std::move(deck), 1.2e-4, [&](double t, double dt, const MpmComponent& c) {
+    const MpmMaterial& mat = c.materials()[1];
+    const Particles& p = mat.particles;
+    const auto& model = static_cast<const ElasticPlastic&>(*mat.model);
+    ASSERT_EQ(model.flow_->type(), "mechanical_threshold_stress");
+    const double ep = p.history[0][0], rate = p.history[1][0], se = p.history[6][0];
+    EXPECT_GE(se, prev_se);
+    prev_se = se;
+    if (t <= 0 || !(rate > 0)) return;
+    PlasticState st;
+    st.eps_p = ep;
+    st.eps_p_rate = rate;
+    st.temperature = p.temperature[0] + mat.heating[0] * dt;  // the return's T (see A4)
+    st.density0 = 8930.0;
+    st.density = 8930.0 / p.F[0].determinant();
+    st.sigma_e = se;
+    // mts_shear at the start-of-step state (VT 7.5, T_0 = 180, D = 3e9, mu_0 = 47.7e9)
+    st.shear_modulus = 47.7e9 - 3.0e9 / (std::exp(180.0 / p.temperature[0]) - 1.0);
+    const double q = von_mises(p.stress[0]);
+    worst = std::max(worst, std::abs(q / model.flow_->evaluate(st).sigma_y - 1.0));
+    last_ep = ep;
+    ++checks;
+  });
+  std::printf("A4 MTS: %d checks, max |q/sigma_y(MTS) - 1| = %.3e, final eps_p %.4f, sigma_e %.4e Pa\n", checks,
+              worst, last_ep, prev_se);
+  EXPECT_GT(checks, 100);
+  EXPECT_LT(worst, 1e-10);  // the return tolerance is 1e-12 (deck); observed 4.5e-13
+  EXPECT_GT(last_ep, 0.45);
+  EXPECT_GT(prev_se, 1e8);
 }
 
 // The deck through the executable: every saved label exists, the run ends with exit 0.
