@@ -16,6 +16,9 @@ class ModelParameters {
   virtual double get_double(const std::string& name) const = 0;  // required
   virtual double get_double(const std::string& name, double fallback) const = 0;
   virtual bool get_bool(const std::string& name, bool fallback) const = 0;
+  // A text value (trimmed), `fallback` when absent. Implementations without
+  // text values (test maps) return the fallback.
+  virtual std::string get_string(const std::string& /*name*/, const std::string& fallback) const { return fallback; }
   // Invalid value: throws (DeckError at the parameter's element).
   [[noreturn]] virtual void fail(const std::string& name, const std::string& message) const = 0;
   // Valid input that asks for something not implemented (MissingFeature).

@@ -27,6 +27,12 @@ bool DeckModelParameters::get_bool(const std::string& name, bool fallback) const
   return node_.get_bool(name, fallback);
 }
 
+std::string DeckModelParameters::get_string(const std::string& name, const std::string& fallback) const {
+  used_.insert(name);
+  const DeckNode* c = node_.child(name);
+  return c ? c->text : fallback;
+}
+
 void DeckModelParameters::fail(const std::string& name, const std::string& message) const {
   at(name).fail(message);
 }

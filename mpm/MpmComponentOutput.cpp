@@ -8,13 +8,13 @@ namespace tephra {
 namespace {
 
 const char* const kParticleLabels[] = {"p.x", "p.particleID", "p.volume", "p.velocity", "p.stress",
-                                       "p.mass", "p.deformationMeasure", "p.displacement",
+                                       "p.mass", "p.deformationMeasure", "p.deformationGradient", "p.displacement",
                                        "p.temperature", "p.color", "p.externalforce", "p.size", "p.q"};
 const char* const kNodeLabels[] = {"g.mass", "g.volume", "g.velocity", "g.velocity_star", "g.acceleration",
                                    "g.externalforce", "g.internalforce", "g.stressFS"};
 const char* const kReductionLabels[] = {"KineticEnergy", "StrainEnergy", "TotalMass", "TotalMomentum",
-                                        "CenterOfMassPosition", "MMSDisplacementErrorL2", "AccStrainEnergy",
-                                        "ThermalEnergy"};
+                                        "CenterOfMassPosition", "CenterOfMassVelocity", "AccStrainEnergy",
+                                        "MMSDisplacementErrorL2"};
 
 void append(std::vector<double>& out, double v) { out.push_back(v); }
 void append(std::vector<double>& out, const Vec3& v) { out.insert(out.end(), v.data(), v.data() + 3); }
@@ -124,6 +124,8 @@ void MpmComponent::fill_output(const std::set<std::string>& labels, OutputFrame&
     if (want("p.stress")) b.fields.push_back(field("p.stress", m.index, p.stress));
     if (want("p.mass")) b.fields.push_back(field("p.mass", m.index, p.mass));
     if (want("p.deformationMeasure")) b.fields.push_back(field("p.deformationMeasure", m.index, p.F));
+    // Newer Vaango's name of the same F (pDefGradLabel).
+    if (want("p.deformationGradient")) b.fields.push_back(field("p.deformationGradient", m.index, p.F));
     if (want("p.displacement")) b.fields.push_back(field("p.displacement", m.index, p.displacement));
     if (want("p.temperature")) b.fields.push_back(field("p.temperature", m.index, p.temperature));
     if (want("p.color")) b.fields.push_back(field("p.color", m.index, p.color));
@@ -165,7 +167,7 @@ void MpmComponent::fill_output(const std::set<std::string>& labels, OutputFrame&
 
 // As Vaango sums them at the end of a step (new particle state):
 //   KineticEnergy = sum 1/2 m |v|^2, TotalMass = sum m, TotalMomentum = sum m v,
-//   CenterOfMassPosition = sum m x / sum m,
+//   CenterOfMassPosition = sum m x / sum m, CenterOfMassVelocity = sum m v / sum m,
 //   StrainEnergy = sum W(F_p) V0_p: the stored energy of the hyperelastic model
 //   (Vaango's CompNeoHook sums the same W(F) V0), not an integral of sigma:d.
 std::map<std::string, std::vector<double>> MpmComponent::reductions(const std::set<std::string>& labels) const {
@@ -203,6 +205,10 @@ std::map<std::string, std::vector<double>> MpmComponent::reductions(const std::s
   if (labels.count("CenterOfMassPosition")) {
     const Vec3 c = mass > 0 ? Vec3(mx / mass) : Vec3::Zero();
     out["CenterOfMassPosition"] = {c[0], c[1], c[2]};
+  }
+  if (labels.count("CenterOfMassVelocity")) {
+    const Vec3 v = mass > 0 ? Vec3(mom / mass) : Vec3::Zero();
+    out["CenterOfMassVelocity"] = {v[0], v[1], v[2]};
   }
   for (int f : setup_.flags.boundary_traction_faces) {
     const std::string force = std::string("BndyForce_") + kFaceNames[f];

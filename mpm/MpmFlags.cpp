@@ -22,6 +22,19 @@ const char* const kNoEffect[] = {
     "CanAddMPMMaterial",
 };
 
+// Flags of Vaango's implicit integrator (ImpMPM) that its explicit SerialMPM
+// never reads, so they cannot change an explicit run (the implicit integrator
+// itself is a MissingFeature): <dynamic>, <solver>, the Newton convergence
+// criteria, <do_implicit_heat_conduction>, and <do_grid_reset>. The last one
+// matters to ImpMPM only (false: the grid nodes follow the displacement);
+// Vaango's explicit SerialMPM reads it in problemSetup and uses it for nothing
+// but an unused initial gDisplacement label, and resets the grid every step
+// (docs/models/plasticity.md, "Deck A4").
+const char* const kImplicitOnly[] = {
+    "dynamic", "solver", "convergence_criteria_disp", "convergence_criteria_energy",
+    "do_implicit_heat_conduction", "do_grid_reset",
+};
+
 // Flags that change the physics, with Vaango's default (MPMFlags). Accepted
 // only with the default value.
 const std::map<std::string, std::string>& physics_defaults() {
@@ -30,7 +43,6 @@ const std::map<std::string, std::string>& physics_defaults() {
       {"create_new_particles", "false"},
       {"manual_new_material", "false"},
       {"DoImplicitHeatConduction", "false"},
-      {"do_grid_reset", "true"},
       {"UseGradientEnhancedVelocityProjection", "false"},
       {"initialize_stress_using_body_force", "false"},
       {"InsertParticles", "false"},
@@ -63,6 +75,7 @@ MpmFlags parse_mpm_flags(const DeckNode* mpm) {
   for (const DeckNode& c : mpm->children) {
     bool no_effect = false;
     for (const char* n : kNoEffect) no_effect = no_effect || c.name == n;
+    for (const char* n : kImplicitOnly) no_effect = no_effect || c.name == n;
     if (no_effect) continue;
 
     if (c.name == "boundary_traction_faces") {

@@ -10,70 +10,21 @@
 #include "models/ModelParameters.h"
 #include "models/solid/Kinematics.h"
 #include "models/solid/PointLoop.h"
+#include "models/solid/SubModelAssembly.h"
 
 namespace tephra {
 
 namespace {
-enum HistoryIndex { kEpsP = 0, kEpsPRate = 1, kPorosity = 2, kDamage = 3, kHistoryCount = 4 };
-
-std::string join_keys(const std::vector<std::string>& keys) {
-  std::string s;
-  for (const auto& k : keys) s += (s.empty() ? "" : ", ") + k;
-  return s;
-}
-
-// The parameters of an absent block: no children; failures name the block.
-class AbsentBlock final : public ModelParameters {
- public:
-  AbsentBlock(const ModelParameters& parent, std::string name) : parent_(parent), name_(std::move(name)) {}
-  bool has(const std::string&) const override { return false; }
-  double get_double(const std::string& n) const override { fail(n, "required"); }
-  double get_double(const std::string&, double fallback) const override { return fallback; }
-  bool get_bool(const std::string&, bool fallback) const override { return fallback; }
-  [[noreturn]] void fail(const std::string& n, const std::string& m) const override {
-    parent_.fail(name_, "default <" + name_ + ">: " + n + ": " + m);
-    throw std::logic_error("ModelParameters::fail returned");  // its contract is to throw
-  }
-  [[noreturn]] void missing_feature(const std::string& n, const std::string& m) const override {
-    parent_.missing_feature(name_, n + ": " + m);
-    throw std::logic_error("ModelParameters::missing_feature returned");  // its contract is to throw
-  }
-
- private:
-  const ModelParameters& parent_;
-  std::string name_;
-};
-
-// Creates the sub-model of block `name` with the family's registry; `fallback`
-// is the key used when the block is absent ("" = the block is required).
-template <class Model, class Create>
-std::shared_ptr<const Model> sub_model(const ModelParameters& params, const std::string& name,
-                                       const std::vector<SubModelEntry<Model>>& table, const std::string& fallback,
-                                       const SubModelContext& ctx, Create create) {
-  const ModelParameters* b = params.block(name);
-  if (!b) {
-    if (fallback.empty()) params.fail(name, "elastic_plastic_hp requires <" + name + " type=\"...\">");
-    return std::shared_ptr<const Model>(create(fallback, AbsentBlock(params, name), ctx));
-  }
-  const std::string key = b->type_attribute();
-  if (key.empty()) params.fail(name, "<" + name + "> needs a type attribute (" + join_keys(sub_model_keys(table)) + ")");
-  auto m = create(key, *b, ctx);
-  if (!m) params.fail(name, "unknown " + name + " type '" + key + "' (valid: " + join_keys(sub_model_keys(table)) + ")");
-  return std::shared_ptr<const Model>(std::move(m));
-}
-
-// The type of an optional block ("" when absent).
-std::string block_type(const ModelParameters& params, const std::string& name) {
-  const ModelParameters* b = params.block(name);
-  return b ? b->type_attribute() : std::string();
-}
+enum HistoryIndex { kEpsP = 0, kEpsPRate = 1, kPorosity = 2, kDamage = 3, kLocalized = 4, kHistoryCount = 5 };
 }  // namespace
 
 std::vector<HistoryVariable> ElasticPlasticHP::history() const {
-  return {{"eqPlasticStrain", 1, {0.0}, "equivalent plastic strain ε_p [-]"},
-          {"eqPlasticStrainRate", 1, {0.0}, "equivalent plastic strain rate ε̇_p = Δε_p/Δt [1/s]"},
-          {"porosity", 1, {p_.initial_porosity}, "void volume fraction φ [-] (not evolved)"},
-          {"damage", 1, {p_.initial_damage}, "scalar damage D [-] (not evolved)"}};
+  // Vaango's ElasticPlasticHP labels (p.plasticStrain, ...).
+  return {{"plasticStrain", 1, {0.0}, "equivalent plastic strain ε_p [-]"},
+          {"plasticStrainRate", 1, {0.0}, "equivalent plastic strain rate ε̇_p = Δε_p/Δt [1/s]"},
+          {"porosity", 1, {failure_.initial_porosity}, "void volume fraction φ [-]"},
+          {"damage", 1, {failure_.initial_damage()}, "scalar damage D [-]"},
+          {"localized", 1, {0.0}, "1 once the point failed (melting, TEPLA, max stress), else 0"}};
 }
 
 bool ElasticPlasticHP::update_point(const Eigen::Matrix3d& F_old, const Eigen::Matrix3d& F_new,
@@ -148,7 +99,7 @@ bool ElasticPlasticHP::update_point(const Eigen::Matrix3d& F_old, const Eigen::M
 
   const Eigen::Matrix3d tau = eos.p * I + s;
   out.r.stress = b.R * tau * b.R.transpose();
-  out.r.stress = 0.5 * (out.r.stress + out.r.stress.transpose());
+  out.r.stress = (0.5 * (out.r.stress + out.r.stress.transpose())).eval();  // eval: no aliasing
   const double rho = density0 / J;
   const double kappa_t = J * eos.dp_dJ;  // tangent bulk modulus (VT eq. 17.164)
   const double kappa = kappa_t > 0.0 ? kappa_t : eos_->bulk_modulus();
@@ -162,7 +113,15 @@ bool ElasticPlasticHP::update_point(const Eigen::Matrix3d& F_old, const Eigen::M
     const double cp = cp_->specific_heat(st);
     out.heating = p_.taylor_quinney * sigma_y * hist[kEpsPRate] / (rho * cp);  // VT 17.27, h^T
   }
-  return out.r.stress.allFinite() && std::isfinite(out.heating);
+  // Porosity, damage (uncoupled, after the return: Algorithm 1) and failure (VT ch. 12, 15, 16).
+  if (delta > 0.0) {
+    st.eps_p = hist[kEpsP];
+    st.eps_p_rate = hist[kEpsPRate];
+    evolve_porosity_and_damage(failure_, out.r.stress, st, dt, hist[kPorosity], hist[kDamage]);
+  }
+  if (dt > 0.0 && metal_point_failed(failure_, melted, delta > 0.0, hist[kPorosity], hist[kDamage], out.r.stress))
+    hist[kLocalized] = 1.0;
+  return out.r.stress.allFinite() && std::isfinite(out.heating) && std::isfinite(hist[kDamage]);
 }
 
 long ElasticPlasticHP::update(const SolidUpdateInput& in, const SolidUpdateOutput& out) const {
@@ -194,41 +153,21 @@ ConstitutiveModelP ElasticPlasticHP::create(const ModelParameters& params) {
   p.tolerance = params.get_double("tolerance", 1e-12);
   if (!(p.tolerance > 0.0)) params.fail("tolerance", "must be > 0");
   p.isothermal = params.get_bool("isothermal", false);
-  p.do_melting = params.get_bool("do_melting", false);
+  p.do_melting = params.get_bool("do_melting", true);  // Vaango's default
   params.get_double("initial_material_temperature", 0.0);  // Vaango: reference of the thermal strain (alpha = 0 here)
-  params.get_double("critical_stress", 0.0);               // used by check_max_stress_failure only
   if (params.get_double("coeff_thermal_expansion", 0.0) != 0.0)
     params.missing_feature("coeff_thermal_expansion", "elastic_plastic_hp thermal expansion strain (alpha != 0)");
-  if (params.get_bool("evolve_porosity", false))
-    params.missing_feature("evolve_porosity", "elastic_plastic_hp porosity evolution");
-  if (params.get_bool("evolve_damage", false))
-    params.missing_feature("evolve_damage", "elastic_plastic_hp damage evolution");
-  if (params.get_bool("check_TEPLA_failure_criterion", false))
-    params.missing_feature("check_TEPLA_failure_criterion", "elastic_plastic_hp TEPLA failure");
-  if (params.get_bool("check_max_stress_failure", false))
-    params.missing_feature("check_max_stress_failure", "elastic_plastic_hp max-stress failure");
-  p.initial_porosity = params.get_double("initial_mean_porosity", 0.0);
-  p.initial_damage = params.get_double("initial_mean_scalar_damage", 0.0);
-  if (params.get_double("initial_std_porosity", 0.0) != 0.0)
-    params.missing_feature("initial_std_porosity", "elastic_plastic_hp random initial porosity");
-  if (params.get_double("initial_std_scalar_damage", 0.0) != 0.0)
-    params.missing_feature("initial_std_scalar_damage", "elastic_plastic_hp random initial damage");
-  // Blocks of the features that are off: accepted, their parameters unused (as Vaango).
-  for (const char* name : {"damage_model", "internal_variable_model", "initial_porosity_distrib",
-                           "initial_scalar_damage_distrib", "critical_porosity", "critical_scalar_damage",
-                           "frac_nucleation", "meanstrain_nucleation", "stddevstrain_nucleation"})
-    params.has(name);
-  const std::string yield = block_type(params, "yield_condition");
+  const std::string yield = assembly::block_type(params, "yield_condition");
   if (yield.empty()) params.fail("yield_condition", "elastic_plastic_hp requires <yield_condition type=\"von_mises\">");
   if (yield != "von_mises" && yield != "vonMises")
     params.missing_feature("yield_condition", "elastic_plastic_hp yield_condition '" + yield + "' (implemented: von_mises)");
-  const std::string stab = block_type(params, "stability_check");
+  const std::string stab = assembly::block_type(params, "stability_check");
   if (!stab.empty() && stab != "none")
     params.missing_feature("stability_check", "elastic_plastic_hp stability_check '" + stab + "'");
-  const std::string kin = block_type(params, "kinematic_hardening_model");
+  const std::string kin = assembly::block_type(params, "kinematic_hardening_model");
   if (!kin.empty() && kin != "none")
     params.missing_feature("kinematic_hardening_model", "elastic_plastic_hp kinematic hardening '" + kin + "'");
-  const std::string dev = block_type(params, "deviatoric_stress_model");
+  const std::string dev = assembly::block_type(params, "deviatoric_stress_model");
   if (!dev.empty() && dev != "hypoElastic")
     params.missing_feature("deviatoric_stress_model", "elastic_plastic_hp deviatoric_stress_model '" + dev + "'");
 
@@ -239,23 +178,24 @@ ConstitutiveModelP ElasticPlasticHP::create(const ModelParameters& params) {
   ctx.specific_heat = params.enclosing_double("specific_heat", 0.0);
   ctx.room_temperature = params.enclosing_double("room_temp", 0.0);
   ctx.density0 = params.enclosing_double("density", 0.0);
-  m->eos_ = sub_model(params, "equation_of_state", plasticity_eos_models(), "default_hypo", ctx,
+  m->failure_ = read_metal_failure(params, ctx, "elastic_plastic_hp");
+  m->eos_ = assembly::sub_model(params, "elastic_plastic_hp", "equation_of_state", plasticity_eos_models(), "default_hypo", ctx,
                       [](const std::string& k, const ModelParameters& q, const SubModelContext& c) {
                         return create_plasticity_eos(k, q, c);
                       });
-  m->shear_ = sub_model(params, "shear_modulus_model", shear_modulus_models(), "constant_shear", ctx,
+  m->shear_ = assembly::sub_model(params, "elastic_plastic_hp", "shear_modulus_model", shear_modulus_models(), "constant_shear", ctx,
                         [](const std::string& k, const ModelParameters& q, const SubModelContext& c) {
                           return create_shear_modulus_model(k, q, c);
                         });
-  m->melt_ = sub_model(params, "melting_temp_model", melting_temperature_models(), "constant_Tm", ctx,
+  m->melt_ = assembly::sub_model(params, "elastic_plastic_hp", "melting_temp_model", melting_temperature_models(), "constant_Tm", ctx,
                        [](const std::string& k, const ModelParameters& q, const SubModelContext& c) {
                          return create_melting_temperature_model(k, q, c);
                        });
-  m->cp_ = sub_model(params, "specific_heat_model", specific_heat_models(), "constant_Cp", ctx,
+  m->cp_ = assembly::sub_model(params, "elastic_plastic_hp", "specific_heat_model", specific_heat_models(), "constant_Cp", ctx,
                      [](const std::string& k, const ModelParameters& q, const SubModelContext& c) {
                        return create_specific_heat_model(k, q, c);
                      });
-  m->flow_ = sub_model(params, "flow_model", flow_stress_models(), "", ctx,
+  m->flow_ = assembly::sub_model(params, "elastic_plastic_hp", "flow_model", flow_stress_models(), "", ctx,
                        [](const std::string& k, const ModelParameters& q, const SubModelContext& c) {
                          return create_flow_stress_model(k, q, c);
                        });

@@ -24,16 +24,19 @@
 //
 // Mie-Grüneisen: the energy term Γ0 E uses E = 0 (the Hugoniot reference; the
 // internal energy is not carried yet).
+// Porosity, damage and the failure flag after the return (uncoupled, as Algorithm 1
+// says; models/solid/MetalFailure.h, Vaango's defaults: evolve_porosity and
+// evolve_damage true, TEPLA and max-stress checks on).
 // MissingFeature: yield conditions other than von_mises, kinematic hardening,
-// evolve_porosity, evolve_damage, stability checks other than "none",
-// coeff_thermal_expansion != 0, stochastic initial porosity/damage,
-// deviatoric_stress_model other than hypoElastic, TEPLA / max-stress failure.
+// stability checks other than "none", coeff_thermal_expansion != 0, stochastic
+// initial porosity/damage, deviatoric_stress_model other than hypoElastic.
 #include <memory>
 
 #include "models/plasticity/FlowStressModel.h"
 #include "models/plasticity/PlasticityEos.h"
 #include "models/plasticity/ThermalModels.h"
 #include "models/solid/ConstitutiveModel.h"
+#include "models/solid/MetalFailure.h"
 
 namespace tephra {
 
@@ -43,9 +46,7 @@ struct ElasticPlasticHPParams {
   double taylor_quinney = 0.9;  // <taylor_quinney_coeff> χ
   double tolerance = 1e-12;     // <tolerance>: relative tolerance of the return
   bool isothermal = false;      // <isothermal>
-  bool do_melting = false;      // <do_melting>
-  double initial_porosity = 0;  // <initial_mean_porosity> (carried, not evolved)
-  double initial_damage = 0;    // <initial_mean_scalar_damage> (carried, not evolved)
+  bool do_melting = true;       // <do_melting> (Vaango's default)
 };
 
 class ElasticPlasticHP final : public ConstitutiveModel {
@@ -59,7 +60,7 @@ class ElasticPlasticHP final : public ConstitutiveModel {
   double shear_modulus() const override { return p_.shear_modulus; }
 
   // The point update (what update() does for one point; unit tests call it).
-  // hist = {ε_p, ε̇_p, φ, D}, read at t_n and overwritten with t_{n+1}.
+  // hist = {ε_p, ε̇_p, φ, D, localized}, read at t_n and overwritten with t_{n+1}.
   struct PointOut {
     SolidPointResult r;
     double plastic_work = 0.0;
@@ -69,6 +70,7 @@ class ElasticPlasticHP final : public ConstitutiveModel {
                     double T, double dt, double density0, double* hist, PointOut& out) const;
 
   ElasticPlasticHPParams p_;
+  MetalFailureParams failure_;  // porosity, damage, failure tests (models/solid/MetalFailure.h)
   std::shared_ptr<const PlasticityEos> eos_;
   std::shared_ptr<const ShearModulusModel> shear_;
   std::shared_ptr<const FlowStressModel> flow_;

@@ -33,6 +33,8 @@ ConstitutiveModelP RigidMaterial::create(const ModelParameters& params) {
   const double K = params.get_double("bulk_modulus", 1.0e200);
   if (!(G > 0.0)) params.fail("shear_modulus", "shear_modulus must be > 0");
   if (!(K > 0.0)) params.fail("bulk_modulus", "bulk_modulus must be > 0");
+  // A rigid body has no strain, thermal or other: the expansion coefficient (deck A4) is accepted, unused.
+  params.get_double("coeff_thermal_expansion", 0.0);
   return std::make_shared<RigidMaterial>(K, G);
 }
 

@@ -70,6 +70,8 @@ inline const std::map<std::string, std::map<std::string, double>>& sample_solid_
       {"rigid", {}},
       // Blocks and material values: sample_solid_blocks().
       {"elastic_plastic_hp", {{"bulk_modulus", 8.0e9}, {"shear_modulus", 3.0e9}, {"taylor_quinney_coeff", 0.9}}},
+      // Vaango's defaults otherwise (alpha = 1e-5: the thermal term is exercised, T_0 = the first T).
+      {"elastic_plastic", {{"bulk_modulus", 8.0e9}, {"shear_modulus", 3.0e9}, {"taylor_quinney_coeff", 0.9}}},
   };
   return table;
 }
@@ -78,7 +80,7 @@ inline const std::map<std::string, std::map<std::string, double>>& sample_solid_
 // samples (von Mises with linear hardening, sigma_0 = 30 MPa: yields at a
 // shear strain of ~1e-2, so the contracts see both branches).
 inline void add_sample_blocks(const std::string& type, MapModelParameters& p) {
-  if (type != "elastic_plastic_hp") return;
+  if (type != "elastic_plastic_hp" && type != "elastic_plastic") return;
   p.add_block("yield_condition", "von_mises");
   p.add_block("flow_model", "linear", {{"sigma_0", 3.0e7}, {"K", 1.0e8}});
   p.enclosing = {{"melt_temp", 1356.0}, {"specific_heat", 414.0}, {"density", 8930.0}};

@@ -2,7 +2,8 @@
 // enclosing_double): the OFHC-Cu constitutive model of deck A4
 // (adiCuJC4000s696K.ups) with type elastic_plastic_hp creates its model with
 // every child read; an unread child inside a block is a DeckError; enabled
-// damage is a MissingFeature.
+// damage starts from the damage model's D0; a Gaussian initial field (a text
+// value read through get_string) is a MissingFeature.
 #include <gtest/gtest.h>
 
 #include "core/base/Errors.h"
@@ -57,8 +58,21 @@ TEST(DeckModelParametersBlocks, UnreadChildOfABlockIsADeckError) {
   EXPECT_THROW(parse(a4_material("<no_such_tag>1</no_such_tag>", "false")), DeckError);
 }
 
-TEST(DeckModelParametersBlocks, EnabledDamageIsAMissingFeature) {
-  EXPECT_THROW(parse(a4_material("", "true")), MissingFeature);
+TEST(DeckModelParametersBlocks, EnabledDamageStartsFromTheDamageModelsD0) {
+  const auto m = parse(a4_material("", "true"));
+  ASSERT_TRUE(m);
+  for (const HistoryVariable& h : m->history())
+    if (h.name == "damage") EXPECT_EQ(h.initial[0], 0.0001);  // <D0> of hancock_mackenzie
+}
+
+TEST(DeckModelParametersBlocks, GaussianInitialDamageIsAMissingFeature) {
+  std::string xml = a4_material("", "true");
+  const std::string at = "<stability_check";
+  xml.insert(xml.find(at), "<initial_scalar_damage_distrib>gauss</initial_scalar_damage_distrib>");
+  EXPECT_THROW(parse(xml), MissingFeature);
+  std::string constant = a4_material("", "true");
+  constant.insert(constant.find(at), "<initial_scalar_damage_distrib>constant</initial_scalar_damage_distrib>");
+  EXPECT_TRUE(parse(constant));
 }
 
 }  // namespace

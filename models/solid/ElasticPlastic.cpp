@@ -1,0 +1,294 @@
+#include "models/solid/ElasticPlastic.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <Eigen/LU>
+
+#include "models/ModelParameters.h"
+#include "models/solid/Kinematics.h"
+#include "models/solid/PointLoop.h"
+#include "models/solid/SubModelAssembly.h"
+
+namespace tephra {
+
+namespace {
+// The fixed part of the history (history() order); optional columns follow.
+enum HistoryIndex { kEpsP = 0, kEpsPRate, kStrainRate, kPorosity, kDamage, kLocalized, kFixedCount };
+constexpr int kMaxHistory = kFixedCount + 3;
+}  // namespace
+
+std::vector<HistoryVariable> ElasticPlastic::history() const {
+  std::vector<HistoryVariable> h = {
+      {"eqPlasticStrain", 1, {0.0}, "equivalent plastic strain eps_p [-]"},
+      {"eqPlasticStrainRate", 1, {0.0}, "equivalent plastic strain rate eps_p_dot = Delta eps_p/dt [1/s]"},
+      {"eqStrainRate", 1, {0.0}, "equivalent strain rate sqrt(2/3)|d| [1/s]"},
+      {"porosity", 1, {failure_.initial_porosity}, "void volume fraction phi [-]"},
+      {"damage", 1, {failure_.initial_damage()}, "scalar damage D [-]"},
+      {"localized", 1, {0.0}, "1 once the point failed (melting, TEPLA, max stress), else 0"}};
+  if (k_sigma_e_ >= 0) h.push_back({"mtsStructureStress", 1, {0.0}, "MTS evolving structure stress sigma_e [Pa]"});
+  if (k_T0_ >= 0) {
+    h.push_back({"thermalReferenceTemperature", 1, {0.0}, "T_0 of VT eq. 18.81, set at the first update [K]"});
+    h.push_back({"lastTemperature", 1, {0.0}, "temperature of the last update [K]"});
+  }
+  return h;
+}
+
+ElasticPlastic::Return ElasticPlastic::plastic_return(double q_trial, double mu, double dt, const PlasticState& st,
+                                                      double c) const {
+  Return r;
+  const double eps_n = st.eps_p, T_n = st.temperature;
+  PlasticState s = st;
+  FlowStress y;
+  // sigma_y and its derivatives at (Dg, T); MTS: sigma_e = sigma_e,n + theta Dg.
+  auto evaluate = [&](double dg, double T) {
+    s.eps_p = eps_n + dg;
+    s.eps_p_rate = dg / dt;
+    s.temperature = T;
+    if (mts_) {
+      s.sigma_e = st.sigma_e;
+      s.sigma_e = st.sigma_e + flow_->internal_stress_rate(s) * dg;
+    }
+    y = flow_->evaluate(s);
+  };
+  // T(Dg) from r_T = T - T_n - Dg c sigma_y(Dg, T) = 0; returns dT/dDg.
+  auto temperature_at = [&](double dg, double& T) {
+    T = T_n;
+    evaluate(dg, T);
+    if (c > 0.0 && dg > 0.0)
+      for (int k = 0; k < 30; ++k) {
+        const double h = T - T_n - dg * c * y.sigma_y;
+        const double dh = 1.0 - dg * c * y.d_T;
+        T -= h / dh;
+        evaluate(dg, T);
+        if (std::abs(h) <= 1e-13 * T) break;
+      }
+    const double H = y.d_eps_p + y.d_eps_p_rate / dt;
+    return c > 0.0 ? c * (y.sigma_y + dg * H) / (1.0 - dg * c * y.d_T) : 0.0;
+  };
+
+  double lo = 0.0, hi = q_trial / (3.0 * mu);
+  double T = T_n;
+  temperature_at(0.0, T);
+  const double tol = p_.tolerance * q_trial;
+  double x = std::min(hi, (q_trial - y.sigma_y) / (3.0 * mu + std::max(0.0, y.d_eps_p)));
+  double g = 0.0;
+  for (int it = 1; it <= 100; ++it) {
+    r.iterations = it;
+    const double dTdx = temperature_at(x, T);
+    g = q_trial - 3.0 * mu * x - y.sigma_y;
+    if (std::abs(g) <= tol) break;
+    (g > 0.0 ? lo : hi) = x;
+    const double dg = -3.0 * mu - y.d_eps_p - y.d_eps_p_rate / dt - y.d_T * dTdx;
+    double next = x - g / dg;
+    if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);  // bisection safeguard
+    if (hi - lo <= 1e-15 * std::max(hi, 1e-300)) break;
+    x = next;
+  }
+  r.delta_gamma = x;
+  r.temperature = T;
+  r.sigma_y = y.sigma_y;
+  r.sigma_e = mts_ ? s.sigma_e : st.sigma_e;
+  r.residual = g;
+  return r;
+}
+
+bool ElasticPlastic::update_point(const Eigen::Matrix3d& F_old, const Eigen::Matrix3d& F_new,
+                                  const Eigen::Matrix3d& stress_old, double T, double dt, double density0,
+                                  double* hist, PointOut& out) const {
+  const Eigen::Matrix3d I = Eigen::Matrix3d::Identity();
+  const double J = F_new.determinant();
+  if (!(J > 0.0) || !(F_old.determinant() > 0.0) || !std::isfinite(J) || !std::isfinite(T)) return false;
+  const PolarDecomposition a = polar_decomposition(F_old), b = polar_decomposition(F_new);
+  // Unrotated strain increment (midpoint rule for d_hat = sym(U_dot U^{-1})).
+  const Eigen::Matrix3d G = (b.U - a.U) * (0.5 * (a.U + b.U)).inverse();
+  const Eigen::Matrix3d de = 0.5 * (G + G.transpose());
+  const Eigen::Matrix3d tau_n = a.R.transpose() * stress_old * a.R;
+  const double p_n = tau_n.trace() / 3.0;
+  const Eigen::Matrix3d s_n = tau_n - p_n * I;
+  const double rho = density0 / J;
+
+  // Thermal reference T_0 (first update) and the last temperature (rate-form EOS).
+  double T0 = T, T_last = T;
+  if (k_T0_ >= 0) {
+    if (!(hist[k_T0_] > 0.0)) hist[k_T0_] = hist[k_Tprev_] = T;
+    T0 = hist[k_T0_];
+    T_last = hist[k_Tprev_];
+  }
+
+  // Moduli and melting temperature at the start of the step (VT §18.2).
+  PlasticState st;
+  st.eps_p = hist[kEpsP];
+  st.eps_p_rate = 0.0;
+  st.temperature = T;
+  st.density0 = density0;
+  st.density = rho;
+  st.pressure = -p_n;
+  st.porosity = hist[kPorosity];
+  st.sigma_e = k_sigma_e_ >= 0 ? hist[k_sigma_e_] : 0.0;
+  st.melt_temperature = melt_->melt_temperature(st);
+  const double mu = shear_->shear_modulus(st);
+  st.shear_modulus = mu;
+  const double cp = p_.compute_specific_heat ? cp_->specific_heat(st) : p_.specific_heat;
+  const double c = (p_.isothermal || dt <= 0.0) ? 0.0 : p_.taylor_quinney / (rho * cp);
+
+  // Deviatoric trial stress (VT eq. 18.45).
+  const Eigen::Matrix3d s_trial = s_n + 2.0 * mu * (de - (de.trace() / 3.0) * I);
+  const double q_trial = std::sqrt(1.5 * s_trial.squaredNorm());
+  Eigen::Matrix3d s = s_trial;
+  double delta = 0.0, sigma_y = 0.0, T_new = T;
+  bool melted = false, plastic = false;
+  if (dt > 0.0) {
+    const FlowStress y0 = flow_->evaluate(st);
+    melted = T > st.melt_temperature || !(y0.sigma_y > 0.0);
+    if (melted) {
+      // Vaango: with <do_melting> the deviator vanishes; without it the old deviator is kept.
+      s = p_.do_melting ? Eigen::Matrix3d::Zero() : s_n;
+    } else if (q_trial > y0.sigma_y && mu > 0.0) {
+      plastic = true;
+      const Return r = plastic_return(q_trial, mu, dt, st, c);
+      delta = r.delta_gamma;
+      sigma_y = r.sigma_y;
+      T_new = r.temperature;
+      if (k_sigma_e_ >= 0) hist[k_sigma_e_] = r.sigma_e;
+      s = s_trial * (1.0 - 3.0 * mu * delta / q_trial);  // VT 18.52 with M = sqrt(3/2) xi/|xi|
+    }
+  }
+  hist[kEpsP] += delta;
+  hist[kEpsPRate] = dt > 0.0 ? delta / dt : 0.0;
+  hist[kStrainRate] = dt > 0.0 ? std::sqrt(2.0 / 3.0) * de.norm() / dt : 0.0;
+
+  // Mean stress (VT eq. 18.81): the EOS at J, minus the thermal pressure.
+  EosInput ei;
+  ei.J = J;
+  ei.p_old = p_n + 3.0 * eos_->bulk_modulus() * p_.alpha * (T_last - T0);  // the mechanical part at t_n
+  ei.dt = dt;
+  ei.trace_d = dt > 0.0 ? de.trace() / dt : 0.0;
+  const EosResult eos = eos_->evaluate(ei);
+  const double kappa_t = J * eos.dp_dJ;  // tangent bulk modulus kappa = J dp/dJ
+  const double kappa = kappa_t > 0.0 ? kappa_t : eos_->bulk_modulus();
+  const double sigma_m = eos.p - 3.0 * kappa * p_.alpha * (T_new - T0);
+  if (k_T0_ >= 0) hist[k_Tprev_] = T_new;
+
+  const Eigen::Matrix3d tau = sigma_m * I + s;
+  out.r.stress = b.R * tau * b.R.transpose();
+  out.r.stress = (0.5 * (out.r.stress + out.r.stress.transpose())).eval();  // eval: no aliasing
+  out.r.wave_speed = std::sqrt((kappa + 4.0 * mu / 3.0) / rho);
+  out.r.energy_density =
+      J * (sigma_m * sigma_m / (2.0 * eos_->bulk_modulus()) + (mu > 0.0 ? s.squaredNorm() / (4.0 * mu) : 0.0));
+  out.plastic_work = J * sigma_y * delta;
+  out.heating = dt > 0.0 ? (T_new - T) / dt : 0.0;  // = chi sigma_y eps_p_dot/(rho C_p) (VT 18.20)
+
+  // Porosity, damage and failure (VT ch. 12, 15, 16), after a plastic step.
+  if (plastic) {
+    st.eps_p = hist[kEpsP];
+    st.eps_p_rate = hist[kEpsPRate];
+    st.temperature = T_new;
+    evolve_porosity_and_damage(failure_, out.r.stress, st, dt, hist[kPorosity], hist[kDamage]);
+  }
+  if (dt > 0.0 && metal_point_failed(failure_, melted, plastic, hist[kPorosity], hist[kDamage], out.r.stress))
+    hist[kLocalized] = 1.0;
+  return out.r.stress.allFinite() && std::isfinite(out.heating) && std::isfinite(hist[kDamage]);
+}
+
+long ElasticPlastic::update(const SolidUpdateInput& in, const SolidUpdateOutput& out) const {
+  const int nh = history_count_;
+  return for_each_point(in.F_new.size(), [&](size_t i) {
+    double hist[kMaxHistory];
+    for (int k = 0; k < nh; ++k) hist[k] = out.history[k][i];
+    PointOut po;
+    if (!update_point(in.F_old[i], in.F_new[i], in.stress_old[i], in.temperature[i], in.dt, in.density0, hist, po))
+      return false;
+    for (int k = 0; k < nh; ++k) out.history[k][i] = hist[k];
+    out.stress[i] = po.r.stress;
+    out.wave_speed[i] = po.r.wave_speed;
+    out.energy_density[i] = po.r.energy_density;
+    out.plastic_work[i] = po.plastic_work;
+    out.heating[i] = po.heating;
+    return true;
+  });
+}
+
+ConstitutiveModelP ElasticPlastic::create(const ModelParameters& params) {
+  using assembly::block_type;
+  using assembly::sub_model;
+  const std::string name = "elastic_plastic";
+  auto m = std::make_shared<ElasticPlastic>();
+  ElasticPlasticParams& p = m->p_;
+  p.bulk_modulus = params.get_double("bulk_modulus");
+  p.shear_modulus = params.get_double("shear_modulus");
+  if (!(p.bulk_modulus > 0.0)) params.fail("bulk_modulus", "must be > 0");
+  if (!(p.shear_modulus > 0.0)) params.fail("shear_modulus", "must be > 0");
+  p.alpha = params.get_double("coeff_thermal_expansion", 1.0e-5);
+  if (!(p.alpha >= 0.0)) params.fail("coeff_thermal_expansion", "must be >= 0");
+  p.taylor_quinney = params.get_double("taylor_quinney_coeff", 0.9);
+  if (!(p.taylor_quinney >= 0.0 && p.taylor_quinney <= 1.0)) params.fail("taylor_quinney_coeff", "must be in [0, 1]");
+  p.tolerance = params.get_double("tolerance", 1.0e-10);
+  if (!(p.tolerance > 0.0 && p.tolerance < 1.0)) params.fail("tolerance", "must be in (0, 1)");
+  p.isothermal = params.get_bool("isothermal", false);
+  p.do_melting = params.get_bool("do_melting", true);
+  p.compute_specific_heat = params.get_bool("compute_specific_heat", false);
+  params.get_double("initial_material_temperature", 294.0);  // Vaango hands it to no law of this model
+  if (params.get_bool("useModifiedEOS", false))
+    params.missing_feature("useModifiedEOS", "elastic_plastic with useModifiedEOS = true");
+
+  const std::string yield = block_type(params, "yield_condition");
+  if (yield.empty()) params.fail("yield_condition", name + " requires <yield_condition type=\"von_mises\">");
+  if (yield != "von_mises" && yield != "vonMises") {
+    if (!find_sub_model(yield_conditions(), yield))
+      params.fail("yield_condition", "unknown yield_condition type '" + yield + "' (valid: " +
+                                         assembly::join_keys(sub_model_keys(yield_conditions())) + ")");
+    params.missing_feature("yield_condition", name + " yield_condition '" + yield +
+                                                  "' (the J2-I1 return of VT §18.7; implemented: von_mises)");
+  }
+  const std::string stab = block_type(params, "stability_check");
+  if (!stab.empty() && stab != "none")
+    params.missing_feature("stability_check", name + " stability_check '" + stab + "'");
+  const std::string kin = block_type(params, "kinematic_hardening_model");
+  if (!kin.empty() && kin != "none")
+    params.missing_feature("kinematic_hardening_model", name + " kinematic hardening '" + kin + "'");
+
+  SubModelContext ctx;
+  ctx.bulk_modulus = p.bulk_modulus;
+  ctx.shear_modulus = p.shear_modulus;
+  ctx.melt_temperature = params.enclosing_double("melt_temp", 0.0);
+  ctx.specific_heat = params.enclosing_double("specific_heat", 0.0);
+  ctx.room_temperature = params.enclosing_double("room_temp", 0.0);
+  ctx.density0 = params.enclosing_double("density", 0.0);
+  p.specific_heat = ctx.specific_heat;
+  if (!p.isothermal && !p.compute_specific_heat && !(p.specific_heat > 0.0))
+    params.fail("isothermal", name + " with plastic heating needs the material's <specific_heat> > 0");
+
+  m->failure_ = read_metal_failure(params, ctx, name);
+  m->eos_ = sub_model(params, name, "equation_of_state", plasticity_eos_models(), "default_hypo", ctx,
+                      [](const std::string& k, const ModelParameters& q, const SubModelContext& c) {
+                        return create_plasticity_eos(k, q, c);
+                      });
+  m->shear_ = sub_model(params, name, "shear_modulus_model", shear_modulus_models(), "constant_shear", ctx,
+                        [](const std::string& k, const ModelParameters& q, const SubModelContext& c) {
+                          return create_shear_modulus_model(k, q, c);
+                        });
+  m->melt_ = sub_model(params, name, "melting_temp_model", melting_temperature_models(), "constant_Tm", ctx,
+                       [](const std::string& k, const ModelParameters& q, const SubModelContext& c) {
+                         return create_melting_temperature_model(k, q, c);
+                       });
+  m->cp_ = sub_model(params, name, "specific_heat_model", specific_heat_models(), "constant_Cp", ctx,
+                     [](const std::string& k, const ModelParameters& q, const SubModelContext& c) {
+                       return create_specific_heat_model(k, q, c);
+                     });
+  m->flow_ = sub_model(params, name, "flow_model", flow_stress_models(), "", ctx,
+                       [](const std::string& k, const ModelParameters& q, const SubModelContext& c) {
+                         return create_flow_stress_model(k, q, c);
+                       });
+  int k = kFixedCount;
+  m->mts_ = m->flow_->type() == "mechanical_threshold_stress";
+  if (m->mts_) m->k_sigma_e_ = k++;
+  if (p.alpha != 0.0) {
+    m->k_T0_ = k++;
+    m->k_Tprev_ = k++;
+  }
+  m->history_count_ = k;
+  return m;
+}
+
+}  // namespace tephra
