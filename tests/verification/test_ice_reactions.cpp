@@ -74,19 +74,32 @@ const CellScalars& model_field(const IceComponent& ice, const std::string& label
 }
 
 // ICE/LightTime.ups (decks README A15): programmed burn of a 1-D Comp-B stick
-// at D = 8.1 km/s. Oracles: (1) the burn front is at D t cell-wise: after the
-// step that started at t_n, exactly the cells with centre x_c <= D t_n have
-// F > 0; (2) the peak pressure is near the CJ pressure of the products
-// (derived above; a programmed burn at D ~ D_CJ drives the products to about
-// the CJ state, smeared over the ~1.5-cell front).
-TEST(IceReactions, LightTimeFrontAtDtAndPeakPressureNearCJ) {
-  set_thread_count(1);
-  test::IceRun r = test::make_ice_run(test::shared_dir() + "/decks/inputs/ICE/LightTime.ups");
+// at D = 8.1 km/s, run to 8 us with n cells of the 0.16 m stick (the deck's
+// 640 cells of 0.25 mm cost minutes; its transverse 0.25 mm is set to the cell
+// size, since the conservative time step also counts the transverse faces).
+// Oracles: (1) the burn front is at D t cell-wise: after the step that
+// started at t_n, exactly the cells with centre x_c <= D t_n have F > 0;
+// (2) the peak pressure approaches the CJ pressure of the products (derived
+// above) from below as the cells shrink (a programmed burn at D ~ D_CJ drives
+// the products to the CJ state, smeared over the ~1.5-cell front): it rises
+// from 2 mm to 1 mm cells and stays within [0.8, 1.02] p_CJ. (The unchanged
+// deck to 12 us: 0.903 p_CJ, docs/ice.md.)
+struct LightTimeRun {
+  double peak = 0;
+};
+
+LightTimeRun light_time(int cells, const CjState& cj) {
+  const double dx = 0.16 / cells, D = 8.1e3, t_end = 8e-6;
+  test::IceRun r = test::make_ice_run(test::shared_dir() + "/decks/inputs/ICE/LightTime.ups", [&](DeckNode& root) {
+    test::deck_node(root, {"Grid", "Level", "Box", "resolution"}).text = "[" + std::to_string(cells) + ", 1, 1]";
+    std::ostringstream up;
+    up << "[0.16, " << dx << ", " << dx << "]";
+    test::deck_node(root, {"Grid", "Level", "Box", "upper"}).text = up.str();
+  });
+  EXPECT_NEAR(chapman_jouguet(jwlc_of(product_eos(*r.deck)), 101325.0).D, cj.D, 1e-9);
   const Grid& g = r.ice->grid();
-  const double D = 8.1e3, t_end = 12e-6;
-  const CjState cj = chapman_jouguet(jwlc_of(product_eos(*r.deck)), 101325.0);
-  EXPECT_NEAR(cj.D, 8089, 2);  // the include's constants were scaled for this deck
-  double t_last = 0, peak = 0;
+  LightTimeRun out;
+  double t_last = 0;
   const double delt_init = r.deck->root.require_child("Time").get_double("delt_init");
   while (r.time < t_end * (1 - 1e-14)) {
     double dt = r.steps == 0 ? delt_init : r.ice->stable_timestep();
@@ -96,7 +109,7 @@ TEST(IceReactions, LightTimeFrontAtDtAndPeakPressureNearCJ) {
     r.time += dt;
     for (std::size_t pi = 0; pi < g.patches.size(); ++pi)
       for_each_cell_serial(g.patches[pi].cells(), [&](int i, int j, int k) {
-        peak = std::max(peak, r.ice->press_CC()[pi](i, j, k));
+        out.peak = std::max(out.peak, r.ice->press_CC()[pi](i, j, k));
       });
   }
   const CellScalars& F = model_field(*r.ice, "F");
@@ -108,18 +121,31 @@ TEST(IceReactions, LightTimeFrontAtDtAndPeakPressureNearCJ) {
       lit += burning;
       wrong += reached != burning;
     });
-  std::printf("LightTime: %d steps to t = %.3g s, %d cells lit (front at D t = %.4f m), peak p = %.4g GPa, "
+  std::printf("LightTime %d cells: %d steps to t = %.3g s, %d cells lit (front at D t = %.4f m), peak p = %.4g GPa, "
               "p_CJ = %.4g GPa (ratio %.3f)\n",
-              r.steps, r.time, lit, D * t_last, peak / 1e9, cj.p / 1e9, peak / cj.p);
+              cells, r.steps, r.time, lit, D * t_last, out.peak / 1e9, cj.p / 1e9, out.peak / cj.p);
   EXPECT_EQ(wrong, 0);
   EXPECT_EQ(lit, int(std::floor(D * t_last / g.dx[0] + 0.5)));
-  EXPECT_NEAR(peak / cj.p, 1.0, 0.15);
+  return out;
+}
+
+TEST(IceReactions, LightTimeFrontAtDtAndPeakPressureTowardsCJ) {
+  set_thread_count(1);
+  // Comp-B products (JWLEOSCompBProd.xml, scaled by 1.014 for this deck).
+  const CjState cj = chapman_jouguet({5.0999434e11, 4.0522056e9, 1.3233369e9, 4.06244, 0.94846, 0.35, 1717.0}, 101325.0);
+  EXPECT_NEAR(cj.D, 8089, 2);  // the deck's D = 8.1 km/s
+  const LightTimeRun coarse = light_time(80, cj), fine = light_time(160, cj);
+  EXPECT_GT(fine.peak, coarse.peak);
+  EXPECT_GT(fine.peak / cj.p, 0.8);
+  EXPECT_LT(fine.peak / cj.p, 1.02);
 }
 
 // A 1-D JWL++ detonation in ANFO (Murnaghan reactant and JWLC products from
 // the EOSData files, the rate constants of ICE/JWLpp8mmRS.ups), 0.25 mm cells,
 // 1 cell across, initiated by a 2 mm booster of products at the CJ density
-// against the symmetry plane x = 0. The front (first cell from the right with
+// against the symmetry plane x = 0 (at T = 300 K + E0/c_v, the temperature of
+// burned products: the JWLC products' pressure does not depend on T, and a
+// colder booster runs out of internal energy in its expansion). The front (first cell from the right with
 // F >= 0.5) is sampled every step; its speed from a least-squares line over
 // the second half of the run must be within 3 % of D_CJ of the products.
 std::string anfo_deck(double length, int cells, double rho_booster) {
@@ -146,7 +172,7 @@ std::string anfo_deck(double length, int cells, double rho_booster) {
   </Grid>
   <DataArchiver><filebase>anfo.uda</filebase><outputInterval>1</outputInterval></DataArchiver>
   <CFD><cfl>0.5</cfl><ICE><advection type="FirstOrder"/>
-    <TimestepControl><Scheme_for_delT_calc>conservative</Scheme_for_delT_calc><knob_for_speedSound>1.0</knob_for_speedSound></TimestepControl>
+    <TimestepControl><Scheme_for_delT_calc>aggressive</Scheme_for_delT_calc><knob_for_speedSound>1.0</knob_for_speedSound></TimestepControl>
     <ClampSpecificVolume>true</ClampSpecificVolume></ICE></CFD>
   <PhysicalConstants><gravity>[0,0,0]</gravity><reference_pressure>101325</reference_pressure></PhysicalConstants>
   <MaterialProperties><ICE>
@@ -160,7 +186,7 @@ std::string anfo_deck(double length, int cells, double rho_booster) {
       <dynamic_viscosity>0</dynamic_viscosity><thermal_conductivity>0</thermal_conductivity>
       <specific_heat>544.96</specific_heat><gamma>1.4</gamma>
       <geom_object><box label="booster"><min>[-1,-1,-1]</min><max>[2e-3,1,1]</max></box><res>[2,2,2]</res>
-        <velocity>[0,0,0]</velocity><temperature>3000</temperature><density>)" << rho_booster << R"(</density><pressure>101325</pressure></geom_object>
+        <velocity>[0,0,0]</velocity><temperature>10500</temperature><density>)" << rho_booster << R"(</density><pressure>101325</pressure></geom_object>
     </material>
   </ICE>
   <exchange_properties><exchange_coefficients><momentum>[1e15]</momentum><heat>[1e15]</heat></exchange_coefficients></exchange_properties>
@@ -175,8 +201,8 @@ std::string anfo_deck(double length, int cells, double rho_booster) {
 
 TEST(IceReactions, JwlppAnfoDetonationRunsAtTheChapmanJouguetSpeed) {
   set_thread_count(1);
-  const double length = 0.06, t_end = 9e-6;
-  const int cells = 240;  // 0.25 mm
+  const double length = 0.12, t_end = 20e-6;
+  const int cells = 240;  // 0.5 mm
   const Jwlc anfo{2.9867e11, 4.11706e9, 7.206147e8, 4.95, 1.15, 0.35, 1160.0};
   const CjState cj = chapman_jouguet(anfo, 101325.0);
   test::IceRun r;
