@@ -204,7 +204,10 @@ double IceComponent::stable_timestep() const {
 // subset; inventory ch. 24 "ICE time step"). docs/ice.md has the equations.
 void IceComponent::advance(double t, double dt, int step) {
   time_ = t;
-  if (setup_.implicit.enabled) {
+  // Implicit, and explicit with source models: a step that fails (no pressure
+  // convergence, or a negative Lagrangian specific volume, Uintah's
+  // recomputeTimeStep) is redone as two steps of dt/2.
+  if (setup_.implicit.enabled || model_src_) {
     advance_with_restarts(dt, step, 0);
     return;
   }
