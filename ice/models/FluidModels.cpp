@@ -76,15 +76,27 @@ class AddHeat final : public IceModel {
 // the non-uniform initialisations.
 class PassiveScalar final : public IceModel {
  public:
+  // Two layouts: Vaango's code reads <PassiveScalar><material/><scalar name>
+  // ... <initialization><geom_object>; Vaango's schema (ups_spec Models.xml,
+  // the layout `tephra --validate` accepts) puts <scalar name> directly in
+  // <Model> with <material> and the <geom_object>s inside it.
   PassiveScalar(const DeckNode& model, const IceSetup& s) {
     const DeckNode* b = model.child("PassiveScalar");
-    if (!b) model.fail("Model type PassiveScalar needs a <PassiveScalar> block");
-    ModelParams p(*b, "PassiveScalar");
-    m_ = p.material("material", s);
-    const DeckNode& sc = p.child("scalar");
-    p.finish();
+    const DeckNode* scp = nullptr;
+    if (b) {
+      ModelParams p(*b, "PassiveScalar");
+      m_ = p.material("material", s);
+      scp = &p.child("scalar");
+      p.finish();
+    } else {
+      ModelParams p(model, "PassiveScalar");
+      scp = &p.child("scalar");
+      p.finish();
+    }
+    const DeckNode& sc = *scp;
     name_ = "scalar-" + sc.require_attribute("name");
     ModelParams q(sc, "PassiveScalar <scalar>");
+    if (!b) m_ = q.material("material", s);
     q.accept("test_conservation");  // Tephra always offers totalSum_<name>
     q.flag("reinitializeDomain", false);
     if (const DeckNode* c = sc.child("constants")) {
@@ -100,21 +112,32 @@ class PassiveScalar final : public IceModel {
     }
     if (const DeckNode* e = sc.child("exponentialDecay")) e->missing_feature("PassiveScalar <exponentialDecay>");
     if (const DeckNode* e = sc.child("interiorSources")) e->missing_feature("PassiveScalar <interiorSources>");
-    const DeckNode& init = q.child("initialization");
+    if (const DeckNode* e = sc.child("reaction_constants")) e->missing_feature("PassiveScalar <reaction_constants>");
+    if (const DeckNode* e = sc.child("doTableTest")) e->missing_feature("PassiveScalar <doTableTest>");
+    std::vector<const DeckNode*> objects;
+    if (b) {
+      const DeckNode& init = q.child("initialization");
+      for (const DeckNode& go : init.children) {
+        if (go.name != "geom_object") go.fail("<initialization> holds <geom_object>s only");
+        objects.push_back(&go);
+      }
+    } else {
+      q.accept("geom_object");
+      objects = sc.children_named("geom_object");
+    }
     q.finish();
     GeometryRegistry geometry;
-    for (const DeckNode& go : init.children) {
-      if (go.name != "geom_object") go.fail("<initialization> holds <geom_object>s only");
+    for (const DeckNode* go : objects) {
       Region r;
-      r.piece = geometry.parse_geom_object(go);
-      r.value = go.get_double("scalar");
-      for (const DeckNode& c : go.children) {
+      r.piece = geometry.parse_geom_object(*go);
+      r.value = go->get_double("scalar");
+      for (const DeckNode& c : go->children) {
         if (GeometryRegistry::is_piece_name(c.name) || c.name == "scalar") continue;
         c.missing_feature("PassiveScalar initialisation <" + c.name + "> (uniform <scalar> only)");
       }
       regions_.push_back(std::move(r));
     }
-    if (regions_.empty()) init.fail("PassiveScalar needs at least one <geom_object> in <initialization>");
+    if (regions_.empty()) sc.fail("PassiveScalar needs at least one initial <geom_object>");
   }
   std::string type() const override { return "PassiveScalar"; }
   void initialize(const Grid& g, const std::vector<IceMaterialFields>& mats) override {
