@@ -127,6 +127,7 @@ void IceComponent::initialize() {
   for (std::size_t pi = 0; pi < g.patches.size(); ++pi)
     press_CC_[pi] = press_equil_CC_[pi];
   for (std::size_t m = 0; m < nm; ++m) apply_state_bcs(m);
+  allocate_model_storage();
   check_state(0, "initialization");
 }
 
@@ -201,8 +202,12 @@ double IceComponent::stable_timestep() const {
 
 // One explicit ICE step (Vaango theory manual ch. 26 step list, pure-fluid
 // subset; inventory ch. 24 "ICE time step"). docs/ice.md has the equations.
-void IceComponent::advance(double /*t*/, double dt, int step) {
-  if (setup_.implicit.enabled) {
+void IceComponent::advance(double t, double dt, int step) {
+  time_ = t;
+  // Implicit, and explicit with source models: a step that fails (no pressure
+  // convergence, or a negative Lagrangian specific volume, Uintah's
+  // recomputeTimeStep) is redone as two steps of dt/2.
+  if (setup_.implicit.enabled || model_src_) {
     advance_with_restarts(dt, step, 0);
     return;
   }
@@ -217,6 +222,7 @@ void IceComponent::advance_one(double dt, int step) {
   } else {
     { PhaseTimers::Scope s(T, "ICE: face velocities");            compute_face_velocities(dt, press_equil_CC_); }
     { PhaseTimers::Scope s(T, "ICE: face momentum exchange");     add_exchange_to_face_velocities(dt); }
+    if (model_src_) { PhaseTimers::Scope s(T, "ICE: model sources"); compute_model_sources(dt, step); }
     { PhaseTimers::Scope s(T, "ICE: pressure increment");         compute_delP_and_pressure(dt); }
   }
   { PhaseTimers::Scope s(T, "ICE: face pressure");                compute_face_pressure(); }

@@ -13,6 +13,7 @@
 #include "ice/IceFields.h"
 #include "ice/IceSetup.h"
 #include "ice/PressureSolver.h"
+#include "ice/models/IceModel.h"
 
 namespace tephra {
 
@@ -38,6 +39,7 @@ class IceComponent final : public Component {
   const CellScalars& press_CC() const { return press_CC_; }
   const CellScalars& press_equil_CC() const { return press_equil_CC_; }
   const CellScalars& delP_Dilatate() const { return delP_Dilatate_; }
+  const std::vector<IceModelP>& models() const { return setup_.models; }
   // Implicit pressure: outer iterations of the last step (0 when explicit),
   // and how many steps were redone with half the time step.
   int last_outer_iterations() const { return last_outer_iterations_; }
@@ -53,6 +55,11 @@ class IceComponent final : public Component {
   void lagrangian_values_and_exchange(double dt);
   void compute_diffusion_sources(std::size_t m, std::size_t pi);
   void advect_and_advance(double dt, int step);
+  // Source models (IceModelStep.cpp, ice/models/): their sources, the volume
+  // fractions they change, the mass-exchange pressure term, and their scalars.
+  void allocate_model_storage();
+  void compute_model_sources(double dt, int step);
+  void advect_model_scalars(std::size_t m, double dt);
   // Implicit pressure (ImplicitPressure.cpp): replaces the face velocities,
   // their exchange and the pressure increment of the explicit step.
   void advance_one(double dt, int step);
@@ -90,6 +97,11 @@ class IceComponent final : public Component {
   StencilCoefficients stencil_;
   CellScalars rhs_, delta_p_;
   int last_outer_iterations_ = 0, step_restarts_ = 0;
+  // Source models: per-step sources (null without models), delP_MassX, the
+  // Lagrangian value of a model scalar, and the time at the start of the step.
+  std::unique_ptr<IceModelSources> model_src_;
+  CellScalars delP_MassX_, scalar_L_;
+  double time_ = 0;
 };
 
 // Reads <CFD><ICE>, <MaterialProperties><ICE>, <exchange_properties>,

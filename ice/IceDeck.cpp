@@ -9,6 +9,7 @@
 #include "core/deck/DeckNode.h"
 #include "ice/Exchange.h"
 #include "ice/IceComponent.h"
+#include "ice/models/IceModel.h"
 #include "models/ModelParameters.h"
 
 namespace tephra {
@@ -335,7 +336,9 @@ void parse_cfd(const DeckNode& root, IceSetup& s) {
         } else if (i.name == "ImplicitSolver") {
           parse_implicit_solver(i, s);
         } else if (i.name == "ClampSpecificVolume") {
-          if (i.as_bool()) i.missing_feature("<ClampSpecificVolume> true");
+          s.clamp_sp_vol = i.as_bool();
+        } else if (i.name == "ADD_HEAT") {
+          // read with the models (ice/models/FluidModels.cpp)
         } else {
           i.missing_feature("<CFD><ICE><" + i.name + ">");
         }
@@ -463,6 +466,9 @@ std::unique_ptr<IceComponent> make_ice_component(const Deck& deck) {
         s.bcs[m][f][l] = resolve(bcs, static_cast<GridFace>(f), mat, labels[l], grid_node);
       }
     }
+  s.models = parse_ice_models(root, s);
+  if (!s.models.empty() && s.implicit.enabled)
+    root.require_child("CFD").missing_feature("reaction/source models with the implicit pressure solve");
   return std::make_unique<IceComponent>(std::move(s));
 }
 

@@ -76,6 +76,8 @@ std::set<std::string> IceComponent::known_labels() const {
   for (const char* l : kCellLabels) s.insert(l);
   for (const char* l : kFaceLabels) s.insert(l);
   for (const char* l : kReductionLabels) s.insert(l);
+  for (const IceModelP& m : setup_.models)
+    for (const std::string& l : m->labels()) s.insert(l);
   return s;
 }
 
@@ -88,8 +90,10 @@ void IceComponent::fill_output(const std::set<std::string>& labels, OutputFrame&
   if (want("press_CC")) put(gather(g, press_CC_, "press_CC", 0));
   if (want("press_equil_CC")) put(gather(g, press_equil_CC_, "press_equil_CC", 0));
   if (want("delP_Dilatate")) put(gather(g, delP_Dilatate_, "delP_Dilatate", 0));
-  // Pressure change by mass exchange (Uintah's delP_MassX): no reactions yet, so exactly 0.
-  if (want("delP_MassX")) {
+  // Pressure change by mass exchange (Uintah's delP_MassX): exactly 0 without source models.
+  if (want("delP_MassX") && model_src_) {
+    put(gather(g, delP_MassX_, "delP_MassX", 0));
+  } else if (want("delP_MassX")) {
     CellScalars zero(g, 0);
     zero.fill(0.0);
     put(gather(g, zero, "delP_MassX", 0));
@@ -108,6 +112,9 @@ void IceComponent::fill_output(const std::set<std::string>& labels, OutputFrame&
     if (want("eng_L_ME_CC")) put(gather(g, f.eng_L_ME_CC, "eng_L_ME_CC", mi));
     if (want("mom_source_CC")) put(gather(g, f.mom_source_CC, "mom_source_CC", mi));
   }
+  for (const IceModelP& model : setup_.models)
+    for (const ModelField& mf : model->fields())
+      if (labels.count(mf.label)) put(gather(g, *mf.field, mf.label, mf.material));
   static bool warned = false;
   for (const char* l : kFaceLabels)
     if (want(l) && !warned) {
@@ -146,6 +153,7 @@ std::map<std::string, std::vector<double>> IceComponent::reductions(const std::s
   if (labels.count("KineticEnergy")) out["KineticEnergy"] = {ke};
   if (labels.count("TotalIntEng")) out["TotalIntEng"] = {ie};
   if (labels.count("TotalMomentum")) out["TotalMomentum"] = {mom[0], mom[1], mom[2]};
+  for (const IceModelP& m : setup_.models) m->reductions(labels, out);
   return out;
 }
 
@@ -170,6 +178,11 @@ void IceComponent::save_state(StateArchive& a) const {
     a.put(pre + "mom_L_ME_CC", flatten(f.mom_L_ME_CC));
     a.put(pre + "eng_L_ME_CC", flatten(f.eng_L_ME_CC));
   }
+  for (std::size_t k = 0; k < setup_.models.size(); ++k) {
+    const std::string pre = "ice.model" + std::to_string(k) + ".";
+    for (auto& [name, field] : setup_.models[k]->state_fields()) a.put(pre + name, flatten(*field));
+    for (auto& [name, value] : setup_.models[k]->state_scalars()) a.put_scalar(pre + name, *value);
+  }
 }
 
 void IceComponent::load_state(const StateArchive& a) {
@@ -188,6 +201,11 @@ void IceComponent::load_state(const StateArchive& a) {
     restore(a, pre + "speedSound_CC", f.speedSound_CC);
     restore(a, pre + "mom_L_ME_CC", f.mom_L_ME_CC);
     restore(a, pre + "eng_L_ME_CC", f.eng_L_ME_CC);
+  }
+  for (std::size_t k = 0; k < setup_.models.size(); ++k) {
+    const std::string pre = "ice.model" + std::to_string(k) + ".";
+    for (auto& [name, field] : setup_.models[k]->state_fields()) restore(a, pre + name, *field);
+    for (auto& [name, value] : setup_.models[k]->state_scalars()) *value = a.scalar(pre + name);
   }
 }
 

@@ -2,7 +2,7 @@
 // What the ICE component reads from a deck (make_ice_component): materials
 // with their EOS and initial geometry, the <CFD> settings, physical constants,
 // exchange coefficients and boundary conditions, all checked before step 1.
-#include "models/thermo/IceSpecificHeat.h"
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -11,8 +11,11 @@
 #include "core/grid/BoundaryConditions.h"
 #include "core/grid/Grid.h"
 #include "models/eos/EquationOfState.h"
+#include "models/thermo/IceSpecificHeat.h"
 
 namespace tephra {
+
+class IceModel;  // ice/models/IceModel.h
 
 // One <geom_object> of an ICE material: the region and its initial state.
 struct IceSource {
@@ -88,6 +91,11 @@ struct IceSetup {
   double reference_pressure = 101325.0;  // read and kept; the ideal gas does not use it
   // Exchange coefficients K_mn, H_mn (symmetric, zero diagonal), n x n row-major.
   std::vector<double> K, H;
+  // <ClampSpecificVolume>: M v_L >= tiny_rho rho_0 V v after the Lagrangian
+  // specific volume (Uintah's clamp, used with the JWL++ decks).
+  bool clamp_sp_vol = false;
+  // <Models><Model> and <CFD><ICE><ADD_HEAT> (ice/models/IceModel.h).
+  std::vector<std::shared_ptr<IceModel>> models;
   // bcs[m][face][label]; unused on periodic faces.
   std::vector<std::array<std::array<IceFaceBc, kBcLabels>, 6>> bcs;
 };

@@ -1,6 +1,7 @@
 // The phases of the explicit ICE step, in order. Equation numbers: Vaango
 // theory manual (ch. 24, 26); "Uintah" marks what the manual leaves open and
 // Uintah's explicit ICE (ICE.cc) fixes. See docs/ice.md.
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -158,6 +159,10 @@ void IceComponent::compute_delP_and_pressure(double dt) {
     for_each_cell(g.patches[pi].cells(), [&](int i, int j, int k) {
       delP_Dilatate_[pi](i, j, k) /= sum_kappa_[pi](i, j, k);
       press_CC_[pi](i, j, k) = press_equil_CC_[pi](i, j, k) + delP_Dilatate_[pi](i, j, k);
+      if (model_src_) {  // + delP_MassX (IceModelStep.cpp), clamped at 1e-12 Pa as Uintah
+        delP_MassX_[pi](i, j, k) /= sum_kappa_[pi](i, j, k);
+        press_CC_[pi](i, j, k) = std::max(1e-12, press_CC_[pi](i, j, k) + delP_MassX_[pi](i, j, k));
+      }
     });
     for (int face = 0; face < 6; ++face)
       apply_scalar_bc(g, g.patches[pi], static_cast<GridFace>(face), setup_.bcs[0][face][kBcPressure], press_CC_[pi]);
@@ -235,6 +240,8 @@ void IceComponent::lagrangian_values_and_exchange(double dt) {
         cv_CC_[m][pi](i, j, k) = cv_model ? cv_model->cv(f.temp_CC[pi](i, j, k)) : cv_const;
       });
       compute_diffusion_sources(m, pi);
+      const IceModelSources* ms = model_src_.get();
+      const double min_mass = setup_.materials[m].tiny_rho * setup_.materials[m].sources[0].density * V;
       for_each_cell(patch.cells(), [&](int i, int j, int k) {
         const IntVec3 c(i, j, k);
         const double mass = mass_L_[m][pi](c);
@@ -247,14 +254,23 @@ void IceComponent::lagrangian_values_and_exchange(double dt) {
         // Viscous force and conduction (Diffusion.h): dt V div(theta tau), dt V div(theta k grad T).
         const Vec3 source = dt * (-V * theta * grad_p + mass * setup_.gravity + V * visc_force_[pi](c));
         f.mom_source_CC[pi](c) = source;
-        const Vec3 mom_L = mass * f.vel_CC[pi](c) + source;
+        Vec3 mom_L = mass * f.vel_CC[pi](c) + source;
         const double ss = f.speedSound_CC[pi](c);
         const double kappa = f.sp_vol_CC[pi](c) / (ss * ss);
         const double cv = cv_CC_[m][pi](c);
-        const double eint_L = mass * cv * f.temp_CC[pi](c) +
-                              V * theta * kappa * press_CC_[pi](c) * delP_Dilatate_[pi](c) + dt * V * heat_[pi](c);
-        vel_L_[m][pi](c) = mom_L / mass;
-        temp_L_[m][pi](c) = eint_L / (mass * cv);
+        double eint_L = mass * cv * f.temp_CC[pi](c) +
+                        V * theta * kappa * press_CC_[pi](c) * delP_Dilatate_[pi](c) + dt * V * heat_[pi](c);
+        double mass_L = mass;
+        if (ms) {
+          // Model sources (Uintah computeLagrangianValues): M_L = max(M + S_M, tiny_rho V),
+          // (Mu)_L += S_mom, (Me)_L = max((Me)_L + S_E, M_min cv T).
+          mass_L = std::max(mass + ms->mass[m][pi](c), min_mass);
+          mom_L += ms->momentum[m][pi](c);
+          eint_L = std::max(eint_L + ms->energy[m][pi](c), min_mass * cv * f.temp_CC[pi](c));
+          mass_L_[m][pi](c) = mass_L;
+        }
+        vel_L_[m][pi](c) = mom_L / mass_L;
+        temp_L_[m][pi](c) = eint_L / (mass_L * cv);
       });
     }
     // Momentum and heat exchange, cell by cell.
@@ -307,13 +323,33 @@ void IceComponent::lagrangian_values_and_exchange(double dt) {
       }
       for (std::size_t m = 0; m < nm; ++m) {
         const IceMaterialFields& f = mats_[m];
-        const double mass = mass_L_[m][pi](c);
+        const double mass = f.rho_CC[pi](c) * V;  // before the model mass source
         const double f_theta = theta_kappa[m] / sum_theta_kappa;
-        const double sp_vol_L = mass * f.sp_vol_CC[pi](c) - V * theta_kappa[m] * delP_Dilatate_[pi](c) +
-                                dt * V * (therm[m] - f_theta * sum_therm);
-        spv_L_[m][pi](c) = sp_vol_L / mass;
+        double sp_vol_L = mass * f.sp_vol_CC[pi](c) - V * theta_kappa[m] * delP_Dilatate_[pi](c) +
+                          dt * V * (therm[m] - f_theta * sum_therm);
+        if (model_src_) sp_vol_L += model_src_->sp_vol[m][pi](c);  // Uintah modelVol_src
+        // <ClampSpecificVolume> (Uintah): M v_L >= tiny_rho V v.
+        if (setup_.clamp_sp_vol)
+          sp_vol_L = std::max(sp_vol_L, setup_.materials[m].tiny_rho * setup_.materials[m].sources[0].density * V *
+                                            f.sp_vol_CC[pi](c));
+        spv_L_[m][pi](c) = sp_vol_L / mass_L_[m][pi](c);
       }
     });
+  }
+  // Uintah's recomputeTimeStep: a non-positive M v_L cannot be advected; with
+  // the step-restart machinery active (implicit, or source models) the step is
+  // redone with dt/2, else the end-of-step state check stops the run.
+  if (setup_.implicit.enabled || model_src_) {
+    for (std::size_t m = 0; m < nm; ++m)
+      for (std::size_t pi = 0; pi < g.patches.size(); ++pi)
+        for_each_cell_serial(g.patches[pi].cells(), [&](int i, int j, int k) {
+          const double v = spv_L_[m][pi](i, j, k);
+          if (v > 0 && std::isfinite(v)) return;
+          std::ostringstream os;
+          os << "Lagrangian specific volume " << v << " of material " << m << " in cell (" << i << "," << j << ","
+             << k << ")";
+          throw StepRestart{os.str()};
+        });
   }
   // Boundary values of the Lagrangian state; output copies.
   for (std::size_t m = 0; m < nm; ++m) {
@@ -416,6 +452,7 @@ void IceComponent::advect_and_advance(double dt, int step) {
           out[pi](i, j, k) = (mass_L_[m][pi](i, j, k) * psi[pi](i, j, k) + dq_[pi](i, j, k)) / mass_new_[pi](i, j, k);
         });
     }
+    if (model_src_) advect_model_scalars(m, dt);
     apply_state_bcs(m);
   }
 }

@@ -61,9 +61,9 @@ void IceComponent::advance_with_restarts(double dt, int step, int depth) {
     return;
   } catch (const StepRestart& r) {
     if (depth >= kMaxRestartDepth)
-      throw NumericalFailure("ICE implicit pressure at step " + std::to_string(step) + ": " + r.why + " after " +
+      throw NumericalFailure("ICE step " + std::to_string(step) + ": " + r.why + " after " +
                              std::to_string(depth) + " halvings of the time step");
-    log::warning("ICE implicit pressure at step " + std::to_string(step) + ": " + r.why +
+    log::warning("ICE step " + std::to_string(step) + ": " + r.why +
                  "; redoing the step as two steps of dt/2");
   }
   for (std::size_t m = 0; m < mats_.size(); ++m) {
@@ -74,8 +74,11 @@ void IceComponent::advance_with_restarts(double dt, int step, int depth) {
   }
   press_CC_ = press;
   ++step_restarts_;
+  const double t0 = time_;  // source models read the time at the start of each half
   advance_with_restarts(0.5 * dt, step, depth + 1);
+  time_ = t0 + 0.5 * dt;
   advance_with_restarts(0.5 * dt, step, depth + 1);
+  time_ = t0;
 }
 
 // Matrix of the correction equation (comment at the top); depends on theta,

@@ -4,6 +4,7 @@
 
 #include "core/base/Errors.h"
 #include "ice/IceComponent.h"
+#include "ice/models/IceModel.h"
 #include "models/solid/ConstitutiveModel.h"
 #include "mpm/MpmComponent.h"
 
@@ -24,7 +25,7 @@ std::vector<std::string> registered_keys(const std::string& family) {
       {"SimulationComponent", [] { return std::vector<std::string>{"mpm", "ice"}; }},
       {"constitutive_model", [] { return constitutive_model_types(); }},
       {"EOS", [] { return equation_of_state_types(); }},
-      {"Model", [] { return std::vector<std::string>{}; }},
+      {"Model", [] { return ice_model_types(); }},
       {"contact", [] { return mpm_contact_types(); }},
       {"interpolator", [] { return mpm_interpolators(); }},
   };

@@ -1,0 +1,95 @@
+#pragma once
+// Models of <Models><Model type=...> (and <CFD><ICE><ADD_HEAT>) that add
+// per-cell sources of mass, momentum, energy and specific volume to the ICE
+// step, between named materials (Uintah's modelMass_src, modelMom_src,
+// modelEng_src, modelVol_src). The ICE step calls compute_sources once per
+// model per step (the loops are inside the model) at the place Uintah's ICE
+// calls computeModelSources: after the equilibration pressure and the face
+// velocities, before updateVolumeFraction and the pressure increment
+// (ICE.cc scheduleTimeAdvance). ice/IceModelStep.cpp applies the sources.
+//
+// Source units (per cell, per step, as Uintah): mass [kg], momentum [kg m/s],
+// energy [J], specific volume [m^3] (mass x specific volume). A conversion of
+// reactant into product moves equal and opposite amounts, so reactant +
+// product conserve mass, momentum and energy to round-off (energy up to the
+// released heat E0 dm).
+#include <map>
+#include <memory>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "ice/IceFields.h"
+
+namespace tephra {
+
+class DeckNode;
+class StateArchive;
+struct IceSetup;
+struct IceMaterialSpec;
+
+// What a model reads, at its place in the step. rho_CC, sp_vol_CC and
+// vol_frac_CC are the equilibration results of this step; vel_CC and temp_CC
+// are the state at the start of the step (Uintah: old_dw); cv_CC the specific
+// heat per cell at the start of the step.
+struct IceModelInput {
+  const Grid& grid;
+  const std::vector<IceMaterialSpec>& specs;
+  const std::vector<IceMaterialFields>& mats;
+  const std::vector<CellScalars>& cv_CC;
+  const CellScalars& press_equil_CC;
+  double time = 0;  // time at the start of the step
+  double dt = 0;
+  int step = 0;
+};
+
+// The per-material sources the models add to (zeroed by the step).
+struct IceModelSources {
+  std::vector<CellScalars> mass, energy, sp_vol;
+  std::vector<CellVectors> momentum;
+};
+
+// A scalar carried with a material's mass (PassiveScalar): the step advects
+// q with the material's mass fluxes, q_new = (M_L (q + src) + div F)/M_new,
+// src the model's per-step source (Uintah's TransportedVariable).
+struct TransportedScalar {
+  std::size_t material = 0;
+  CellScalars* q = nullptr;
+  const CellScalars* src = nullptr;  // may be null
+};
+
+// A cell field a model saves under a Vaango label (F, delF, ...).
+struct ModelField {
+  std::string label;
+  int material = 0;
+  const CellScalars* field = nullptr;
+};
+
+class IceModel {
+ public:
+  virtual ~IceModel() = default;
+  virtual std::string type() const = 0;
+  // Allocates the model's own fields (after the ICE state exists).
+  virtual void initialize(const Grid& grid, const std::vector<IceMaterialFields>& mats) = 0;
+  virtual void compute_sources(const IceModelInput& in, IceModelSources& out) = 0;
+  virtual std::vector<TransportedScalar> transported() { return {}; }
+  // Output: labels it can save, the cell fields and the reduction sums.
+  virtual std::set<std::string> labels() const { return {}; }
+  virtual std::vector<ModelField> fields() const { return {}; }
+  virtual void reductions(const std::set<std::string>&, std::map<std::string, std::vector<double>>&) const {}
+  // Restart: fields whose value carries over between steps, and sums.
+  virtual std::vector<std::pair<std::string, CellScalars*>> state_fields() { return {}; }
+  virtual std::vector<std::pair<std::string, double*>> state_scalars() { return {}; }
+};
+
+using IceModelP = std::shared_ptr<IceModel>;
+
+// <Models><Model type=...> and <CFD><ICE><ADD_HEAT> of the deck, checked
+// against the ICE materials of `setup` (names or indices). Unknown type:
+// DeckError listing the registered ones; a Vaango type Tephra lacks: exit 3.
+std::vector<IceModelP> parse_ice_models(const DeckNode& root, const IceSetup& setup);
+
+// Registered <Model type> keys (tephra --list Model).
+std::vector<std::string> ice_model_types();
+
+}  // namespace tephra
