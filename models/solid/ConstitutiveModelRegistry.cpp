@@ -12,6 +12,7 @@
 #include "models/solid/ConstitutiveModel.h"
 #include "models/solid/HypoElastic.h"
 #include "models/solid/RigidMaterial.h"
+#include "models/solid/ViscoScram.h"
 
 namespace tephra {
 
@@ -27,6 +28,7 @@ const std::map<std::string, Creator>& creators() {
       {"elastic_plastic_hp", &ElasticPlasticHP::create},
       {"hypo_elastic", &HypoElastic::create},
       {"rigid", &RigidMaterial::create},
+      {"visco_scram", &ViscoScram::create},
   };
   return table;
 }

@@ -72,6 +72,15 @@ inline const std::map<std::string, std::map<std::string, double>>& sample_solid_
       {"elastic_plastic_hp", {{"bulk_modulus", 8.0e9}, {"shear_modulus", 3.0e9}, {"taylor_quinney_coeff", 0.9}}},
       // Vaango's defaults otherwise (alpha = 1e-5: the thermal term is exercised, T_0 = the first T).
       {"elastic_plastic", {{"bulk_modulus", 8.0e9}, {"shear_modulus", 3.0e9}, {"taylor_quinney_coeff", 0.9}}},
+      // PBX 9501 crack constants of the stock burn decks; G = sum G_i = 3 GPa and
+      // PR = 1/3 give K = 2G(1+nu)/(3(1-2nu)) = 8 GPa; slow relaxation (tau_i >= 1e5 s)
+      // and a 10 nm initial crack so the small-strain contract sees the elastic limit.
+      {"visco_scram", {{"PR", 1.0 / 3.0}, {"CrackParameterA", 1e-3}, {"CrackPowerValue", 10.0},
+                       {"CrackMaxGrowthRate", 300.0}, {"StressIntensityF", 500.0}, {"CrackFriction", 0.35},
+                       {"InitialCrackRadius", 1e-8}, {"CrackGrowthRate", 12.0},
+                       {"G1", 0.6e9}, {"G2", 0.6e9}, {"G3", 0.6e9}, {"G4", 0.6e9}, {"G5", 0.6e9},
+                       {"RTau1", 0.0}, {"RTau2", 1e-6}, {"RTau3", 1e-6}, {"RTau4", 1e-5}, {"RTau5", 1e-5},
+                       {"Beta", 1.5e-4}, {"Gamma", 1.0}, {"DCp_DTemperature", 3.30773}}},
   };
   return table;
 }
@@ -80,6 +89,7 @@ inline const std::map<std::string, std::map<std::string, double>>& sample_solid_
 // samples (von Mises with linear hardening, sigma_0 = 30 MPa: yields at a
 // shear strain of ~1e-2, so the contracts see both branches).
 inline void add_sample_blocks(const std::string& type, MapModelParameters& p) {
+  if (type == "visco_scram") p.enclosing = {{"specific_heat", 996.0}};  // heating needs c_v
   if (type != "elastic_plastic_hp" && type != "elastic_plastic") return;
   p.add_block("yield_condition", "von_mises");
   p.add_block("flow_model", "linear", {{"sigma_0", 3.0e7}, {"K", 1.0e8}});
