@@ -52,7 +52,7 @@
 //  * the 5 elements and c are advanced by ONE classical RK4 of the coupled
 //    system (Vaango offsets every element by the current element's stage
 //    increment and freezes c_dot at t_n in the stress equation), sub-stepped
-//    so that h RTau_max <= 1/2: stable for any dt (Vaango caps dt at 1 us
+//    so that h RTau_max <= 1/4: stable for any dt (Vaango caps dt at 1 us
 //    instead).
 //
 // Volumetric response for MPMICE (Vaango computePressEOSCM / computeRhoMicroCM,
