@@ -11,6 +11,7 @@
 #include "core/grid/BoundaryConditions.h"
 #include "core/grid/Grid.h"
 #include "models/eos/EquationOfState.h"
+#include "ice/Lodi.h"
 
 namespace tephra {
 
@@ -41,7 +42,7 @@ enum class AdvectionOrder { First, Second };
 // Boundary condition of one label on one domain face for one material, as
 // the ICE step applies it (core/grid/BoundaryConditions describes the deck).
 struct IceFaceBc {
-  BCKind kind = BCKind::Neumann;  // Dirichlet, Neumann, Symmetry, ComputeFromDensity
+  BCKind kind = BCKind::Neumann;  // Dirichlet, Neumann, Symmetry, ComputeFromDensity, LODI
   double scalar = 0;
   Vec3 vector = Vec3::Zero();
 };
@@ -88,6 +89,7 @@ struct IceSetup {
   double reference_pressure = 101325.0;  // read and kept; the ideal gas does not use it
   // Exchange coefficients K_mn, H_mn (symmetric, zero diagonal), n x n row-major.
   std::vector<double> K, H;
+  LodiSettings lodi;  // <BoundaryConditions><LODI> (enabled when a face uses var="LODI")
   // bcs[m][face][label]; unused on periodic faces.
   std::vector<std::array<std::array<IceFaceBc, kBcLabels>, 6>> bcs;
 };
