@@ -10,7 +10,8 @@ namespace {
 
 const char* const kCellLabels[] = {"press_CC",      "press_equil_CC", "delP_Dilatate", "rho_CC",      "temp_CC",
                                    "vel_CC",        "vol_frac_CC",    "sp_vol_CC",     "speedSound_CC", "rho_micro_CC",
-                                   "mom_L_ME_CC",   "eng_L_ME_CC",    "mom_source_CC", "delP_MassX"};
+                                   "mom_L_ME_CC",   "eng_L_ME_CC",    "mom_source_CC", "delP_MassX",
+                                   "mass_L_CC",     "mom_L_CC",       "int_eng_L_CC"};
 // Face-centred normal velocities (Uintah's SFCX/SFCY/SFCZ labels), before and
 // after the face momentum exchange; written on the faces of the interior cells.
 const char* const kFaceLabels[] = {"uvel_FC", "vvel_FC", "wvel_FC", "uvel_FCME", "vvel_FCME", "wvel_FCME"};
@@ -125,6 +126,11 @@ void IceComponent::fill_output(const std::set<std::string>& labels, OutputFrame&
     if (want("mom_L_ME_CC")) put(gather(g, f.mom_L_ME_CC, "mom_L_ME_CC", mi));
     if (want("eng_L_ME_CC")) put(gather(g, f.eng_L_ME_CC, "eng_L_ME_CC", mi));
     if (want("mom_source_CC")) put(gather(g, f.mom_source_CC, "mom_source_CC", mi));
+    // Lagrangian values of the last step (eq. 26.8-26.10, before the exchange):
+    // interior cells (the extra cells hold 0).
+    if (want("mass_L_CC")) put(gather(g, mass_L_[m], "mass_L_CC", mi));
+    if (want("mom_L_CC")) put(gather(g, f.mom_L_CC, "mom_L_CC", mi));
+    if (want("int_eng_L_CC")) put(gather(g, f.int_eng_L_CC, "int_eng_L_CC", mi));
   }
   static const GridLocation kFace[3] = {GridLocation::FaceX, GridLocation::FaceY, GridLocation::FaceZ};
   for (std::size_t m = 0; m < mats_.size(); ++m)

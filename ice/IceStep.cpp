@@ -255,6 +255,8 @@ void IceComponent::lagrangian_values_and_exchange(double dt) {
         const double cv = cv_CC_[m][pi](c);
         const double eint_L = mass * cv * f.temp_CC[pi](c) +
                               V * theta * kappa * press_CC_[pi](c) * delP_Dilatate_[pi](c) + dt * V * heat_[pi](c);
+        f.mom_L_CC[pi](c) = mom_L;
+        f.int_eng_L_CC[pi](c) = eint_L;
         vel_L_[m][pi](c) = mom_L / mass;
         temp_L_[m][pi](c) = eint_L / (mass * cv);
       });
