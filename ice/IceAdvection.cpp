@@ -10,21 +10,63 @@ namespace tephra {
 
 namespace {
 
-double van_leer(double a, double b) { return a * b > 0.0 ? 2.0 * a * b / (a + b) : 0.0; }
-Vec3 van_leer(const Vec3& a, const Vec3& b) { return {van_leer(a[0], b[0]), van_leer(a[1], b[1]), van_leer(a[2], b[2])}; }
-
 // The range of faces normal to d of the interior cells of patch p.
 IndexRange faces_of(const Patch& p, int d) { return {p.lo, p.hi + IntVec3::Unit(d)}; }
 
 // q on the donor's slab for the face (i,j,k) normal to d with face-volume
 // fraction phi (signed: > 0 flows toward +d).
+// Uintah's limited gradient (SecondOrderBase::limitedGradient), one
+// component: central differences g_d = (q_{+d} - q_{-d})/2 (per cell), the
+// extreme vertex values q +- sum_d |g_d|/2, the extremes of the six face
+// neighbours, and one factor for all directions,
+//   alpha = min(1, max(0, (q_max - q)/(v_max - q)), max(0, (q_min - q)/(v_min - q))).
+// Returns alpha g_d (the limited difference per cell along d). In 1-D this is
+// the monotonized-central limiter min((a+b)/2, 2a, 2b) for a b > 0.
+double limited_difference(const double* qn, double q, int d) {
+  // qn: the six neighbours (-x, +x, -y, +y, -z, +z).
+  double gsum = 0, qmax = qn[0], qmin = qn[0];
+  for (int k = 0; k < 3; ++k) gsum += std::abs(qn[2 * k + 1] - qn[2 * k]) * 0.25;
+  for (int k = 1; k < 6; ++k) {
+    qmax = std::max(qmax, qn[k]);
+    qmin = std::min(qmin, qn[k]);
+  }
+  if (gsum == 0.0) return 0.0;
+  const double a_max = std::max(0.0, (qmax - q) / gsum), a_min = std::max(0.0, (q - qmin) / gsum);
+  const double alpha = std::min(1.0, std::min(a_max, a_min));
+  return alpha * 0.5 * (qn[2 * d + 1] - qn[2 * d]);
+}
+
+double limited_difference(const GridArray<double>& q, const IntVec3& D, int d) {
+  double qn[6];
+  for (int k = 0; k < 3; ++k) {
+    const IntVec3 e = IntVec3::Unit(k);
+    qn[2 * k] = q(IntVec3(D - e));
+    qn[2 * k + 1] = q(IntVec3(D + e));
+  }
+  return limited_difference(qn, q(D), d);
+}
+
+Vec3 limited_difference(const GridArray<Vec3>& q, const IntVec3& D, int d) {
+  Vec3 out;
+  for (int c = 0; c < 3; ++c) {
+    double qn[6];
+    for (int k = 0; k < 3; ++k) {
+      const IntVec3 e = IntVec3::Unit(k);
+      qn[2 * k] = q(IntVec3(D - e))[c];
+      qn[2 * k + 1] = q(IntVec3(D + e))[c];
+    }
+    out[c] = limited_difference(qn, q(D)[c], d);
+  }
+  return out;
+}
+
 template <class T>
 T slab_value(const Grid& g, AdvectionOrder order, const GridArray<T>& q, int d, const IntVec3& face, double phi) {
   const IntVec3 e = IntVec3::Unit(d);
   const IntVec3 D = phi > 0.0 ? IntVec3(face - e) : face;
   if (order == AdvectionOrder::First) return q(D);
   if (!g.periodic[d] && (D[d] < 0 || D[d] >= g.cells[d])) return q(D);  // extra cell: no slope (periodic: ghosts wrap)
-  const T dq = van_leer(T(q(D) - q(D - e)), T(q(D + e) - q(D)));
+  const T dq = limited_difference(q, D, d);
   const double s = phi > 0.0 ? 1.0 : -1.0;
   return q(D) + dq * (s * 0.5 * (1.0 - std::abs(phi)));
 }

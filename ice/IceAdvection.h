@@ -8,19 +8,24 @@
 //     F = phi * q_slab,    q_slab = q_D                       (first order)
 //                          q_slab = q_D + s_D (1 - phi)/2 * dq_D   (second order)
 // where s_D = +1 when the slab sits at the high side of D (u_f > 0), -1 else,
-// and dq_D is D's van Leer limited difference along the face normal,
-//     dq = 2 a b / (a + b) if a b > 0 else 0,  a = q_D - q_{D-1}, b = q_{D+1} - q_D
-// (the slab centroid is (1 - phi)/2 cells from D's centre). Extra cells get
-// dq = 0. A specific quantity psi (velocity, c_v T, specific volume) moves
+// and dq_D is D's limited difference along the face normal, Uintah's
+// limited gradient (SecondOrderBase::limitedGradient): central differences
+// g_k = (q_{D+k} - q_{D-k})/2 in the three directions scaled by one factor
+//     alpha = min(1, (q_max - q_D)/(v_max - q_D), (q_min - q_D)/(v_min - q_D)) >= 0
+// where q_max, q_min are the extremes of the six face neighbours and
+// v_max, v_min = q_D +- sum_k |g_k|/2 the extreme values at D's corners
+// (Barth-Jespersen; in 1-D the monotonized-central limiter min((a+b)/2, 2a, 2b)
+// for a = q_D - q_{D-1}, b = q_{D+1} - q_D of one sign, else 0). The slab
+// centroid is (1 - phi)/2 cells from D's centre. Extra cells get dq = 0. A specific quantity psi (velocity, c_v T, specific volume) moves
 // with the mass: F_psi = F_mass * psi_slab, psi_slab built the same way from
 // psi. These are compatible fluxes (VanderHeyden & Kashiwa; inventory ch. 24
 // step 10): a uniform psi stays uniform to round-off whatever the density.
 // Each face flux is computed once, so the update is conservative.
 //
-// Differences from Uintah (documented in docs/ice.md): Uintah limits a
-// cell-centred gradient with the min/max of the neighbours and uses the
-// (mass-weighted) slab centroids in all three directions at once; here the
-// slopes are per direction (van Leer), which is TVD in 1-D.
+// Differences from Uintah (documented in docs/ice.md): Uintah moves the
+// specific quantities' vertex values with the mass-weighted centroids
+// (mass_massVertex_ratio); here psi's slab value uses psi's own limited
+// gradient at the geometric slab centroid.
 #include "core/grid/Grid.h"
 #include "ice/IceFields.h"
 #include "ice/IceSetup.h"

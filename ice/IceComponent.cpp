@@ -250,6 +250,7 @@ void IceComponent::apply_state_bcs(std::size_t m) {
         apply_scalar_bc(g, p, gf, bc[kBcSpecificVol], f.sp_vol_CC[pi]);
       }
     }
+    if (setup_.lodi.enabled) lodi_state_bc(m, pi);
   }
   halo_->exchange(f.rho_CC);
   halo_->exchange(f.temp_CC);

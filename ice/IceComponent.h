@@ -73,6 +73,11 @@ class IceComponent final : public Component {
   };
 
   void apply_state_bcs(std::size_t m);  // rho, vel, temp, sp_vol extra cells of material m
+  // LODI faces (IceLodiBcs.cpp, ice/Lodi.h): the pressure, the Lagrangian
+  // velocity/temperature and the new state of the LODI material.
+  void lodi_pressure_bc(std::size_t pi, CellScalars& press);
+  void lodi_lagrangian_bc(std::size_t m, std::size_t pi);
+  void lodi_state_bc(std::size_t m, std::size_t pi);
   void check_state(int step, const char* phase) const;
 
   IceSetup setup_;

@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstdlib>
 #include <set>
 
 #include "core/base/Log.h"
@@ -316,7 +317,12 @@ void parse_cfd(const DeckNode& root, IceSetup& s) {
   for (const DeckNode& c : cfd.children) {
     if (c.name == "cfl") {
       s.cfl = c.as_double();
-      if (!(s.cfl > 0.0 && s.cfl <= 1.0)) c.fail("cfl must be in (0, 1]");
+      // Uintah accepts any positive cfl. Above the stable limit (docs/ice.md:
+      // Sod is stable to 1.0 with the aggressive step) the run stops with exit 4
+      // when a cell would lose more than its content (check_outflux) or the
+      // state turns non-physical (check_state).
+      if (!(s.cfl > 0.0)) c.fail("cfl must be > 0");
+      if (s.cfl > 1.0) log::warning(c.location().str() + ": cfl " + std::to_string(s.cfl) + " > 1 is beyond the stability limit of explicit ICE");
     } else if (c.name == "ICE") {
       for (const DeckNode& i : c.children) {
         if (i.name == "advection") {
@@ -383,12 +389,60 @@ IceFaceBc resolve(const BoundaryConditions& bcs, GridFace face, int m, const cha
       if (std::string(label) != "Velocity" && bc->is_vector)
         throw DeckError(bc->where, std::string("a ") + label + " condition needs a scalar <value>");
       return out;
+    case BCKind::LODI:
+      if (std::string(label) == "SpecificVol")
+        throw DeckError(bc->where, "LODI is not a SpecificVol condition (use computeFromDensity)");
+      return out;
     case BCKind::ComputeFromDensity:
       if (std::string(label) != "SpecificVol")
         throw MissingFeature(bc->where, std::string("computeFromDensity for label '") + label + "' (only SpecificVol)");
       return out;
     default:
       throw MissingFeature(bc->where, std::string("ICE boundary condition var=\"") + bc_kind_name(bc->kind) + "\"");
+  }
+}
+
+// <LODI> (Uintah's read_LODI_BC_inputs): press_infinity required, sigma
+// default 0.27, Li_scale default 1, material by name or index. Uintah's
+// checks: a LODI face needs the block; the Pressure condition belongs to
+// material 0; the other LODI labels to the LODI material.
+void read_lodi(const BoundaryConditions& bcs, IceSetup& s) {
+  const BoundaryCondition* first = nullptr;
+  for (const BoundaryCondition& b : bcs.list) {
+    if (b.kind != BCKind::LODI) continue;
+    if (!first) first = &b;
+    if (b.material == kAllMaterials)
+      throw DeckError(b.where, "a LODI condition needs the material's id, not id=\"all\" (Uintah)");
+  }
+  if (!first) {
+    if (bcs.lodi) log::warning(bcs.lodi->where.str() + ": <LODI> block but no face uses var=\"LODI\"; ignored");
+    return;
+  }
+  if (!bcs.lodi) throw DeckError(first->where, "var=\"LODI\" needs a <LODI> block in <BoundaryConditions>");
+  if (s.implicit.enabled) throw MissingFeature(first->where, "LODI boundary conditions with <ImplicitSolver>");
+  const LodiParameters& lp = *bcs.lodi;
+  LodiSettings& L = s.lodi;
+  L.enabled = true;
+  L.press_infinity = lp.press_infinity;
+  L.sigma = lp.sigma;
+  if (lp.li_scale) L.li_scale = *lp.li_scale;
+  if (!(L.press_infinity > 0)) throw DeckError(lp.where, "<LODI><press_infinity> must be > 0");
+  if (!(L.sigma >= 0)) throw DeckError(lp.where, "<LODI><sigma> must be >= 0");
+  L.material = -1;
+  for (std::size_t m = 0; m < s.materials.size(); ++m)
+    if (s.materials[m].name == lp.material) L.material = int(m);
+  if (L.material < 0) {
+    char* end = nullptr;
+    const long v = std::strtol(lp.material.c_str(), &end, 10);
+    if (end && *end == '\0' && !lp.material.empty() && v >= 0 && v < long(s.materials.size())) L.material = int(v);
+  }
+  if (L.material < 0) throw DeckError(lp.where, "<LODI><material> '" + lp.material + "' is not an ICE material");
+  for (const BoundaryCondition& b : bcs.list) {
+    if (b.kind != BCKind::LODI) continue;
+    if (b.label == "Pressure" && b.material != 0)
+      throw DeckError(b.where, "the LODI Pressure condition must have id=\"0\" (Uintah)");
+    if (b.label != "Pressure" && b.material != L.material)
+      throw DeckError(b.where, "LODI conditions must belong to the <LODI> material " + std::to_string(L.material));
   }
 }
 
@@ -444,8 +498,8 @@ std::unique_ptr<IceComponent> make_ice_component(const Deck& deck) {
   s.H = parse_coefficients(ec, "heat", n);
 
   const BoundaryConditions bcs = parse_boundary_conditions(grid_node);
-  if (bcs.lodi || bcs.sine || bcs.micro_slip)
-    grid_node.require_child("BoundaryConditions").missing_feature("ICE LODI / sine / micro-slip boundary conditions");
+  if (bcs.sine || bcs.micro_slip)
+    grid_node.require_child("BoundaryConditions").missing_feature("ICE sine / micro-slip boundary conditions");
   static const char* labels[kBcLabels] = {"Pressure", "Velocity", "Temperature", "Density", "SpecificVol"};
   for (const BoundaryCondition& b : bcs.list) {
     if (b.material != kAllMaterials && (b.material < 0 || b.material >= n))
@@ -469,6 +523,7 @@ std::unique_ptr<IceComponent> make_ice_component(const Deck& deck) {
   s.models = parse_ice_models(root, s);
   if (!s.models.empty() && s.implicit.enabled)
     root.require_child("CFD").missing_feature("reaction/source models with the implicit pressure solve");
+  read_lodi(bcs, s);
   return std::make_unique<IceComponent>(std::move(s));
 }
 

@@ -42,6 +42,8 @@ struct IceMaterialFields {
   CellScalars speedSound_CC;
   FaceScalars vel_FC;        // face velocities before exchange (eq. 26.1)
   FaceScalars vel_FCME;      // after the face momentum exchange
+  CellVectors mom_L_CC;      // Lagrangian momentum before exchange, M u + dt(...) (eq. 26.8; output label)
+  CellScalars int_eng_L_CC;  // Lagrangian internal energy before exchange (eq. 26.10; output label)
   CellVectors mom_L_ME_CC;   // Lagrangian momentum after exchange (output label)
   CellScalars eng_L_ME_CC;   // Lagrangian internal energy after exchange
   CellVectors mom_source_CC; // dt (-V theta grad p* + M g + V div(theta tau)) of the step (eq. 26.5)
@@ -49,7 +51,8 @@ struct IceMaterialFields {
   IceMaterialFields() = default;
   IceMaterialFields(const Grid& g, int ghosts)
       : rho_CC(g, ghosts), vel_CC(g, ghosts), temp_CC(g, ghosts), sp_vol_CC(g, ghosts), rho_micro_CC(g, ghosts),
-        vol_frac_CC(g, ghosts), speedSound_CC(g, ghosts), vel_FC(g, 0), vel_FCME(g, 0), mom_L_ME_CC(g, ghosts),
+        vol_frac_CC(g, ghosts), speedSound_CC(g, ghosts), vel_FC(g, 0), vel_FCME(g, 0), mom_L_CC(g, 0),
+        int_eng_L_CC(g, 0), mom_L_ME_CC(g, ghosts),
         eng_L_ME_CC(g, ghosts), mom_source_CC(g, ghosts) {}
 };
 

@@ -2,7 +2,6 @@
 // restart state.
 #include <string>
 
-#include "core/base/Log.h"
 #include "ice/IceComponent.h"
 
 namespace tephra {
@@ -11,9 +10,10 @@ namespace {
 
 const char* const kCellLabels[] = {"press_CC",      "press_equil_CC", "delP_Dilatate", "rho_CC",      "temp_CC",
                                    "vel_CC",        "vol_frac_CC",    "sp_vol_CC",     "speedSound_CC", "rho_micro_CC",
-                                   "mom_L_ME_CC",   "eng_L_ME_CC",    "mom_source_CC", "delP_MassX"};
-// Face-centred labels: accepted in <save>, not written yet (OutputFrame holds
-// cell and node fields only).
+                                   "mom_L_ME_CC",   "eng_L_ME_CC",    "mom_source_CC", "delP_MassX",
+                                   "mass_L_CC",     "mom_L_CC",       "int_eng_L_CC"};
+// Face-centred normal velocities (Uintah's SFCX/SFCY/SFCZ labels), before and
+// after the face momentum exchange; written on the faces of the interior cells.
 const char* const kFaceLabels[] = {"uvel_FC", "vvel_FC", "wvel_FC", "uvel_FCME", "vvel_FCME", "wvel_FCME"};
 const char* const kReductionLabels[] = {"KineticEnergy", "TotalMass", "TotalIntEng", "TotalMomentum"};
 
@@ -39,6 +39,25 @@ FieldArray gather(const Grid& g, const PatchFields<CellField<T>>& f, const std::
             for (int c = 0; c < 3; ++c) out.values[3 * idx + c] = f[pi](i, j, k)[c];
           }
         }
+  }
+  return out;
+}
+
+// The faces normal to d of the interior cells, i fastest: extent cells + e_d.
+FieldArray gather_faces(const Grid& g, const FaceScalars& f, int d, const std::string& label, int material) {
+  FieldArray out;
+  out.label = label;
+  out.material = material;
+  const IntVec3 n = g.cells + IntVec3::Unit(d);
+  out.values.assign(static_cast<std::size_t>(n.prod()), 0.0);
+  for (std::size_t pi = 0; pi < g.patches.size(); ++pi) {
+    const Patch& p = g.patches[pi];
+    const IntVec3 hi = p.hi + IntVec3::Unit(d);
+    const GridArray<double>& a = f.at(d, pi);
+    for (int k = p.lo[2]; k < hi[2]; ++k)
+      for (int j = p.lo[1]; j < hi[1]; ++j)
+        for (int i = p.lo[0]; i < hi[0]; ++i)
+          out.values[static_cast<std::size_t>(i + n[0] * (j + n[1] * k))] = a(i, j, k);
   }
   return out;
 }
@@ -111,17 +130,24 @@ void IceComponent::fill_output(const std::set<std::string>& labels, OutputFrame&
     if (want("mom_L_ME_CC")) put(gather(g, f.mom_L_ME_CC, "mom_L_ME_CC", mi));
     if (want("eng_L_ME_CC")) put(gather(g, f.eng_L_ME_CC, "eng_L_ME_CC", mi));
     if (want("mom_source_CC")) put(gather(g, f.mom_source_CC, "mom_source_CC", mi));
+    // Lagrangian values of the last step (eq. 26.8-26.10, before the exchange):
+    // interior cells (the extra cells hold 0).
+    if (want("mass_L_CC")) put(gather(g, mass_L_[m], "mass_L_CC", mi));
+    if (want("mom_L_CC")) put(gather(g, f.mom_L_CC, "mom_L_CC", mi));
+    if (want("int_eng_L_CC")) put(gather(g, f.int_eng_L_CC, "int_eng_L_CC", mi));
   }
   for (const IceModelP& model : setup_.models)
     for (const ModelField& mf : model->fields())
       if (labels.count(mf.label)) put(gather(g, *mf.field, mf.label, mf.material));
-  static bool warned = false;
-  for (const char* l : kFaceLabels)
-    if (want(l) && !warned) {
-      warned = true;
-      log::warning(std::string("ICE: face-centred labels (") + l +
-                   ", ...) are not written yet; the output frame holds cell and node fields only");
-    }
+  static const GridLocation kFace[3] = {GridLocation::FaceX, GridLocation::FaceY, GridLocation::FaceZ};
+  for (std::size_t m = 0; m < mats_.size(); ++m)
+    for (int d = 0; d < 3; ++d)
+      for (int me = 0; me < 2; ++me) {
+        const std::string label = kFaceLabels[3 * me + d];
+        if (!want(label.c_str())) continue;
+        const FaceScalars& f = me == 0 ? mats_[m].vel_FC : mats_[m].vel_FCME;
+        frame.grid_fields.push_back({gather_faces(g, f, d, label, static_cast<int>(m)), kFace[d]});
+      }
 }
 
 // As Uintah's ICE sums them over the interior cells of the new state:

@@ -12,6 +12,7 @@
 #include "core/grid/Grid.h"
 #include "models/eos/EquationOfState.h"
 #include "models/thermo/IceSpecificHeat.h"
+#include "ice/Lodi.h"
 
 namespace tephra {
 
@@ -44,7 +45,7 @@ enum class AdvectionOrder { First, Second };
 // Boundary condition of one label on one domain face for one material, as
 // the ICE step applies it (core/grid/BoundaryConditions describes the deck).
 struct IceFaceBc {
-  BCKind kind = BCKind::Neumann;  // Dirichlet, Neumann, Symmetry, ComputeFromDensity
+  BCKind kind = BCKind::Neumann;  // Dirichlet, Neumann, Symmetry, ComputeFromDensity, LODI
   double scalar = 0;
   Vec3 vector = Vec3::Zero();
 };
@@ -96,6 +97,7 @@ struct IceSetup {
   bool clamp_sp_vol = false;
   // <Models><Model> and <CFD><ICE><ADD_HEAT> (ice/models/IceModel.h).
   std::vector<std::shared_ptr<IceModel>> models;
+  LodiSettings lodi;  // <BoundaryConditions><LODI> (enabled when a face uses var="LODI")
   // bcs[m][face][label]; unused on periodic faces.
   std::vector<std::array<std::array<IceFaceBc, kBcLabels>, 6>> bcs;
 };

@@ -65,6 +65,7 @@ void IceComponent::compute_equilibration_pressure(int step) {
     for (int face = 0; face < 6; ++face)
       apply_scalar_bc(g, g.patches[pi], static_cast<GridFace>(face), setup_.bcs[0][face][kBcPressure],
                       press_equil_CC_[pi]);
+    if (setup_.lodi.enabled) lodi_pressure_bc(pi, press_equil_CC_);
   }
   halo_->exchange(press_equil_CC_);
   for (IceMaterialFields& f : mats_) {
@@ -166,6 +167,7 @@ void IceComponent::compute_delP_and_pressure(double dt) {
     });
     for (int face = 0; face < 6; ++face)
       apply_scalar_bc(g, g.patches[pi], static_cast<GridFace>(face), setup_.bcs[0][face][kBcPressure], press_CC_[pi]);
+    if (setup_.lodi.enabled) lodi_pressure_bc(pi, press_CC_);
   }
   halo_->exchange(press_CC_);
 }
@@ -269,6 +271,8 @@ void IceComponent::lagrangian_values_and_exchange(double dt) {
           eint_L = std::max(eint_L + ms->energy[m][pi](c), min_mass * cv * f.temp_CC[pi](c));
           mass_L_[m][pi](c) = mass_L;
         }
+        f.mom_L_CC[pi](c) = mom_L;
+        f.int_eng_L_CC[pi](c) = eint_L;
         vel_L_[m][pi](c) = mom_L / mass_L;
         temp_L_[m][pi](c) = eint_L / (mass_L * cv);
       });
@@ -369,6 +373,7 @@ void IceComponent::lagrangian_values_and_exchange(double dt) {
           apply_scalar_bc(g, p, gf, bc[kBcSpecificVol], spv_L_[m][pi]);
         }
       }
+      if (setup_.lodi.enabled) lodi_lagrangian_bc(m, pi);
       for_each_cell(p.cells_with_extra(), [&](int i, int j, int k) {
         const double mass = mass_L_[m][pi](i, j, k);
         f.mom_L_ME_CC[pi](i, j, k) = mass * vel_L_[m][pi](i, j, k);

@@ -188,7 +188,7 @@ BoundaryConditions parse_boundary_conditions(const DeckNode& grid_section) {
     if (child.name == "LODI") {
       LodiParameters p;
       p.press_infinity = child.get_double("press_infinity");
-      p.sigma = child.get_double("sigma");
+      p.sigma = child.get_double("sigma", 0.27);  // Uintah LODI2 default
       if (child.has_child("Li_scale")) p.li_scale = child.get_double("Li_scale");
       p.material = child.get_string("material");
       p.where = child.location();

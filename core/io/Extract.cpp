@@ -147,13 +147,13 @@ std::vector<size_t> select_frames(const ExtractRequest& r, const std::vector<int
 // The (i,j,k) a request selects among the stored extent of a grid field, in
 // output order: all of them, the one holding a point, or those a line crosses.
 std::vector<IntVec3> selected_indices(const ExtractRequest& r, const Grid& grid, const SavedGridField& g) {
-  const bool node = g.field.location == GridLocation::Node;
+  const IntVec3 stagger = location_stagger(g.field.location);  // 1: values on the cell boundaries
   const IntVec3 lo = g.first_index, hi = g.first_index + g.extent;  // hi exclusive
   auto index_of = [&](const Vec3& x) {
     IntVec3 ijk;
     for (int d = 0; d < 3; ++d) {
       const double s = (x[d] - grid.lower[d]) / grid.dx[d];
-      ijk[d] = static_cast<int>(node ? std::lround(s) : std::floor(s));
+      ijk[d] = static_cast<int>(stagger[d] ? std::lround(s) : std::floor(s));
     }
     return ijk;
   };
@@ -191,8 +191,8 @@ void extract_grid(const ExtractRequest& r, const SavedFrame& f, const SavedGridF
   for (const IntVec3& ijk : selected_indices(r, f.grid, g)) {
     const IntVec3 o = ijk - g.first_index;
     const size_t at = (size_t(o[2]) * g.extent[1] + o[1]) * g.extent[0] + o[0];
-    const Vec3 x = g.field.location == GridLocation::Node ? f.grid.node_position(ijk[0], ijk[1], ijk[2])
-                                                           : f.grid.cell_center(ijk[0], ijk[1], ijk[2]);
+    const Vec3 x = f.grid.cell_center(ijk[0], ijk[1], ijk[2]) -
+                   0.5 * f.grid.dx.cwiseProduct(location_stagger(g.field.location).cast<double>());
     out << num(f.time);
     if (material_column) out << ',' << d.material;
     out << ',' << ijk[0] << ',' << ijk[1] << ',' << ijk[2] << ',' << num(x[0]) << ',' << num(x[1]) << ','

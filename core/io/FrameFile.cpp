@@ -31,7 +31,7 @@ void check_components(const FieldArray& f) {
 // (cells, or cells+1 nodes) or the interior plus the extra cells on each side.
 SavedGridField locate(const GridFieldArray& g, const Grid& grid) {
   const long long n = static_cast<long long>(g.data.values.size()) / g.data.components;
-  const IntVec3 node = (g.location == GridLocation::Node) ? IntVec3::Ones() : IntVec3::Zero();
+  const IntVec3 node = location_stagger(g.location);
   SavedGridField s;
   s.field = g;
   if (n * g.data.components == static_cast<long long>(g.data.values.size())) {
@@ -102,7 +102,7 @@ void write_grid(hid_t file, const OutputFrame& frame, const std::string& path) {
     h5::Handle set(H5Dopen2(it->second.id(), f.data.label.c_str(), H5P_DEFAULT),
                    h5::Handle::Kind::Dataset);
     h5::set_attr_string(set.id(), "centering",
-                        f.location == GridLocation::Node ? "Node" : "Cell", path);
+                        location_name(f.location), path);
     h5::set_attr_int64s(set.id(), "first_index", to_i64(s.first_index), path);
   }
 }
@@ -167,9 +167,14 @@ void read_grid(hid_t file, SavedFrame& out, bool with_values, const std::string&
       s.field.data.material = material;
       s.field.data.components = components_from(dims, 3);
       const std::string centering = h5::attr_string(set.id(), "centering", where);
-      if (centering != "Cell" && centering != "Node")
-        throw RuntimeFailure(where + ": unknown centering '" + centering + "'");
-      s.field.location = centering == "Node" ? GridLocation::Node : GridLocation::Cell;
+      bool known = false;
+      for (GridLocation l : {GridLocation::Cell, GridLocation::Node, GridLocation::FaceX, GridLocation::FaceY,
+                             GridLocation::FaceZ})
+        if (centering == location_name(l)) {
+          s.field.location = l;
+          known = true;
+        }
+      if (!known) throw RuntimeFailure(where + ": unknown centering '" + centering + "'");
       s.first_index = to_ivec(h5::attr_int64s(set.id(), "first_index", where), where);
       s.extent = IntVec3(int(dims[2]), int(dims[1]), int(dims[0]));
       if (with_values && (only.empty() || only == label))

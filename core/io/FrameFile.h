@@ -5,7 +5,7 @@
 //   /                      attrs: time (f64), step (i64), format "tephra-frame-1"
 //   /grid                  attrs: lower[3], dx[3] (f64), cells[3], extra_cells[3] (i64)
 //   /grid/mat<M>/<label>   [nk][nj][ni] or [nk][nj][ni][ncomp], i fastest;
-//                          attrs: centering "Cell"|"Node", first_index[3] (i64):
+//                          attrs: centering "Cell"|"Node"|"FaceX|Y|Z", first_index[3] (i64):
 //                          the (i,j,k) of element [0][0][0] (0, or -extra_cells
 //                          when the field includes the extra cells)
 //   /particles/mat<M>/position    [n][3] f64

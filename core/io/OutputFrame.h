@@ -25,7 +25,30 @@ struct ParticleBlock {
   std::vector<FieldArray> fields;    // one entry per particle per field
 };
 
-enum class GridLocation { Cell, Node };
+// Cell centres, nodes, or the centres of the faces normal to x, y or z
+// (Uintah's SFCX/SFCY/SFCZ variables: uvel_FC, vvel_FC, wvel_FC).
+enum class GridLocation { Cell, Node, FaceX, FaceY, FaceZ };
+
+// Per direction 1 where the location sits on the cell boundaries (a field of
+// n cells then has n + 1 values along that direction), else 0.
+inline IntVec3 location_stagger(GridLocation l) {
+  switch (l) {
+    case GridLocation::Node: return IntVec3::Ones();
+    case GridLocation::FaceX: return IntVec3::Unit(0);
+    case GridLocation::FaceY: return IntVec3::Unit(1);
+    case GridLocation::FaceZ: return IntVec3::Unit(2);
+    default: return IntVec3::Zero();
+  }
+}
+inline const char* location_name(GridLocation l) {
+  switch (l) {
+    case GridLocation::Node: return "Node";
+    case GridLocation::FaceX: return "FaceX";
+    case GridLocation::FaceY: return "FaceY";
+    case GridLocation::FaceZ: return "FaceZ";
+    default: return "Cell";
+  }
+}
 
 // A field on the whole interior (+ extra cells for Cell) of the grid, stored
 // with i fastest: index = i + ni*(j + nj*k) over the written extent.

@@ -49,6 +49,7 @@ void data_item(std::ostringstream& x, const std::string& dims, const char* numbe
 struct Mesh {
   IntVec3 first;
   IntVec3 cells;
+  IntVec3 face_shift = IntVec3::Zero();  // face fields: a mesh moved by -dx/2 along their axis
   std::vector<const SavedGridField*> fields;
 };
 
@@ -58,7 +59,9 @@ std::string mesh_name(const Mesh& m, const Grid& g) {
   if (m.first == IntVec3::Zero() && m.cells == g.cells) return "grid";
   if (m.first == -g.extra_cells && m.cells == g.cells + 2 * g.extra_cells)
     return "grid_with_extra_cells";
-  return "grid_from_" + std::to_string(m.first[0]) + "_" + std::to_string(m.first[1]) + "_" +
+  const std::string faces = m.face_shift[0] ? "x_faces_" : m.face_shift[1] ? "y_faces_" : m.face_shift[2] ? "z_faces_" : "";
+  if (!faces.empty() && m.first == IntVec3::Zero()) return "grid_" + faces.substr(0, faces.size() - 1);
+  return "grid_" + faces + "from_" + std::to_string(m.first[0]) + "_" + std::to_string(m.first[1]) + "_" +
          std::to_string(m.first[2]);
 }
 
@@ -71,27 +74,36 @@ std::string xdmf_frame_grid(const SavedFrame& f, const std::string& h5) {
   if (f.has_grid) {
     // Cell fields of extent n and node fields of extent n+1 live on the same
     // mesh of n cells; fields that include the extra cells get a second mesh.
-    std::map<std::tuple<int, int, int, int, int, int>, Mesh> meshes;
-    auto key = [](const IntVec3& a, const IntVec3& b) {
-      return std::make_tuple(a[0], a[1], a[2], b[0], b[1], b[2]);
+    // A face field (n + 1 values along its axis) is cell data on a mesh of
+    // n + 1 cells moved by -dx/2 along that axis: its cells are centred on the faces.
+    std::map<std::tuple<int, int, int, int, int, int, int>, Mesh> meshes;
+    auto key = [](const IntVec3& a, const IntVec3& b, int face_axis) {
+      return std::make_tuple(a[0], a[1], a[2], b[0], b[1], b[2], face_axis);
     };
-    meshes[key(IntVec3::Zero(), f.grid.cells)] = Mesh{IntVec3::Zero(), f.grid.cells, {}};
+    meshes[key(IntVec3::Zero(), f.grid.cells, -1)] = Mesh{IntVec3::Zero(), f.grid.cells, IntVec3::Zero(), {}};
     for (const SavedGridField& g : f.grid_fields) {
-      IntVec3 cells = g.field.location == GridLocation::Node ? IntVec3(g.extent - IntVec3::Ones())
-                                                             : g.extent;
-      auto& m = meshes[key(g.first_index, cells)];
+      const bool node = g.field.location == GridLocation::Node;
+      const IntVec3 shift = node ? IntVec3(IntVec3::Zero()) : location_stagger(g.field.location);
+      const IntVec3 cells = node ? IntVec3(g.extent - IntVec3::Ones()) : g.extent;
+      int axis = -1;
+      for (int d = 0; d < 3; ++d)
+        if (shift[d]) axis = d;
+      auto& m = meshes[key(g.first_index, cells, axis)];
       m.first = g.first_index;
       m.cells = cells;
+      m.face_shift = shift;
       m.fields.push_back(&g);
     }
     // The interior mesh first, then any other (in key order).
     std::vector<const Mesh*> order;
     for (const auto& [k, m] : meshes)
-      if (m.first == IntVec3::Zero() && m.cells == f.grid.cells) order.insert(order.begin(), &m);
+      if (m.first == IntVec3::Zero() && m.cells == f.grid.cells && m.face_shift == IntVec3::Zero())
+        order.insert(order.begin(), &m);
       else if (!m.fields.empty()) order.push_back(&m);
     for (const Mesh* mp : order) {
       const Mesh& m = *mp;
-      const Vec3 origin = f.grid.lower + f.grid.dx.cwiseProduct(m.first.cast<double>());
+      const Vec3 origin = f.grid.lower + f.grid.dx.cwiseProduct(m.first.cast<double>()) -
+                          0.5 * f.grid.dx.cwiseProduct(m.face_shift.cast<double>());
       x << "        <Grid Name=\"" << mesh_name(m, f.grid) << "\" GridType=\"Uniform\">\n"
         << "          <Topology TopologyType=\"3DCoRectMesh\" Dimensions=\""
         << dims_kji(m.cells + IntVec3::Ones()) << "\"/>\n"
@@ -112,7 +124,7 @@ std::string xdmf_frame_grid(const SavedFrame& f, const std::string& h5) {
         if (d.components > 1) dims += " " + std::to_string(d.components);
         x << "          <Attribute Name=\"" << escape(d.label) << "_mat" << d.material
           << "\" AttributeType=\"" << attribute_type(d.components) << "\" Center=\""
-          << (g->field.location == GridLocation::Node ? "Node" : "Cell") << "\">\n";
+          << (g->field.location == GridLocation::Node ? "Node" : "Cell") << "\">\n";  // faces: cells of the moved mesh
         data_item(x, dims, "Float",
                   h5 + ":/grid/mat" + std::to_string(d.material) + "/" + d.label, "            ");
         x << "          </Attribute>\n";

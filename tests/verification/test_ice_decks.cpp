@@ -21,6 +21,7 @@
 #include <cstdio>
 
 #include "core/grid/Loop.h"
+#include "core/io/OutputFrame.h"
 #include "core/io/StateArchive.h"
 #include "tests/support/IceRuns.h"
 #include "tests/support/TestPaths.h"
@@ -50,6 +51,31 @@ TEST(IceDecks, AdvectStaysUniformToRoundOff) {
     worst = std::max(worst, std::abs(r.ice->press_CC()[0](i, j, k) / p0 - 1));
   });
   EXPECT_LT(worst, 1e-12);
+}
+
+// The Lagrangian labels (mass_L_CC, mom_L_CC, int_eng_L_CC; saved by the
+// LightTime and rate-stick decks) on advect.ups: a uniform state has no
+// pressure gradient and no dilatation, so eq. 26.8-26.10 give
+// M_L = rho V, (Mu)_L = M u and (M e)_L = M c_v T exactly.
+TEST(IceDecks, LagrangianLabelsOfAUniformFlow) {
+  set_thread_count(1);
+  test::IceRun r = test::make_ice_run(test::shared_dir() + "/decks/inputs/ICE/advect.ups");
+  test::run_to(r, -1, 3);
+  OutputFrame frame;
+  r.ice->fill_output({"mass_L_CC", "mom_L_CC", "int_eng_L_CC"}, frame);
+  ASSERT_EQ(frame.grid_fields.size(), 3u);
+  const Grid& g = r.ice->grid();
+  const double V = g.cell_volume(), rho = r.ice->fields()[0].rho_CC[0](2, 2, 2), M = rho * V;
+  const double T = r.ice->fields()[0].temp_CC[0](2, 2, 2);
+  const double expected[3] = {M, M * 1.0, M * 716.0 * T};  // advect.ups: u = (1,1,1), c_v = 716
+  const long long interior = static_cast<long long>(g.cells.prod());
+  for (int f = 0; f < 3; ++f) {
+    const FieldArray& a = frame.grid_fields[f].data;
+    long long hits = 0;
+    for (double v : a.values)
+      if (std::abs(v / expected[f] - 1) < 1e-12) ++hits;
+    EXPECT_GE(hits, interior * a.components) << a.label;
+  }
 }
 
 test::IceRun closed_hot_blob() {

@@ -8,13 +8,20 @@
 // 2N is log2(E_N / E_2N). For a solution with shocks and contacts a
 // consistent scheme converges at first order at best in L1 (the contact is
 // smeared over O(N^(1/2)) cells with first-order upwinding, so the density
-// error converges slower than the pressure error; Toro sec. 6.4). The brief
-// asked for a density order >= 0.8 with first order; observed (N = 200 -> 400):
-// first order rho 0.57, p 0.65; second order rho 0.66, p 0.68; Toro 1 (first
-// order, 100 -> 200) p 0.50. The bounds below are the contact-limited rate
-// 1/2 of first-order schemes (linearly degenerate waves), not the brief's 0.8:
-// the gap is reported, not hidden. The plateau is checked to 1 % and second
-// order must beat first order on the same grid.
+// error converges slower than the pressure error; Toro sec. 6.4). Observed
+// (N = 100/200/400/800, orders per doubling): first order rho 0.57 0.57 0.56,
+// p 0.70 0.65 0.69; second order rho 0.73 0.67 0.63, p 0.79 0.68 0.71. The
+// brief's 0.8 is not reached; the investigation (docs/ice.md "Sod and Toro"):
+// the density error of the second-order runs splits into the rarefaction
+// (first-order pointwise error in the fan, 3.8e-3/2.1e-3/1.2e-3 at
+// N = 200/400/800), the contact and the shock zones, and the star plateau does
+// not converge (p* -0.48 %, rho*R +1.5 % at N = 400 and 800 alike) because the
+// total energy falls by 0.18 % whatever N and cfl: ICE's internal-energy
+// equation (Uintah's) does not return the kinetic energy that the momentum
+// advection dissipates. The bounds below are the contact-limited rate 1/2 of
+// first-order schemes, not the brief's 0.8: the gap is reported, not hidden.
+// The plateau is checked to 1 % and second order must beat first order on the
+// same grid.
 //
 // The y and z sizes of the tube are set to one cell width: the deck's 1 mm
 // (250 cells over 1 m) would make the time step follow dy, not dx, and turn a
@@ -23,11 +30,16 @@
 
 #include <cmath>
 #include <cstdio>
+#include <sstream>
 #include <string>
+
+#include "core/base/Errors.h"
+#include "core/deck/DeckLoader.h"
 
 #include "core/grid/Loop.h"
 #include "tests/support/ExactRiemann.h"
 #include "tests/support/IceRuns.h"
+#include "tests/support/ShockTube.h"
 #include "tests/support/TestPaths.h"
 
 namespace tephra {
@@ -36,42 +48,23 @@ namespace {
 using test::ExactRiemann;
 using test::GasState;
 
-struct Errors {
-  double rho = 0, p = 0, u = 0;
-};
+using Errors = test::ShockTubeErrors;
 
-test::IceRun run_tube(const std::string& deck, int n, const char* advection) {
-  auto edit = [&](DeckNode& root) {
-    DeckNode& box = test::deck_node(root, {"Grid", "Level", "Box"});
-    test::deck_node(box, {"resolution"}).text = "[" + std::to_string(n) + ",1,1]";
-    const double w = 1.0 / n;
-    test::deck_node(box, {"upper"}).text = "[1," + std::to_string(w) + "," + std::to_string(w) + "]";
-    for (auto& a : test::deck_node(root, {"CFD", "ICE", "advection"}).attributes)
-      if (a.first == "type") a.second = advection;
-  };
-  test::IceRun r = test::make_ice_run(deck, edit);
+test::IceRun run_tube(int n, const char* advection) {
+  test::SodOptions o;
+  o.cells = n;
+  o.advection = advection;
+  test::IceRun r = test::make_sod_run(o);
   test::run_to(r);
   return r;
 }
 
-Errors l1_errors(const test::IceRun& r, const ExactRiemann& ex, double x0) {
-  const Grid& g = r.ice->grid();
-  Errors e;
-  for (int i = 0; i < g.cells[0]; ++i) {
-    const double x = g.cell_center(i, 0, 0)[0];
-    const GasState s = ex.sample((x - x0) / r.time);
-    e.rho += std::abs(r.ice->fields()[0].rho_CC[0](i, 0, 0) - s.rho) * g.dx[0];
-    e.p += std::abs(r.ice->press_CC()[0](i, 0, 0) - s.p) * g.dx[0];
-    e.u += std::abs(r.ice->fields()[0].vel_CC[0](i, 0, 0)[0] - s.u) * g.dx[0];
-  }
-  return e;
-}
+Errors l1_errors(const test::IceRun& r, const ExactRiemann& ex, double x0) { return test::shock_tube_l1(r, ex, x0); }
 
-std::string sod_deck() { return test::shared_dir() + "/decks/inputs/ICE/riemann_sm.ups"; }
 std::string toro_deck() { return test::shared_dir() + "/decks/orderAccuracy/ICE/riemann.ups"; }
 
 // Sod (A8): gamma 1.4, rho 1.1768/0.11768, p 101325/10132.5, u = 0, x0 = 0.5.
-const GasState kSodL{1.1768292682926831, 0.0, 101325.0}, kSodR{0.11768292682926831, 0.0, 10132.5};
+const GasState kSodL = test::sod_left(), kSodR = test::sod_right();
 // Toro test 1 (A9): rho, u, p = 1, 0.75, 1 | 0.125, 0, 0.1; x0 = 0.3.
 const GasState kToroL{1.0, 0.75, 1.0}, kToroR{0.125, 0.0, 0.1};
 
@@ -89,24 +82,26 @@ TEST(IceRiemann, ExactSolverReproducesTheStarStatesOfTheDecksReadme) {
 
 Errors convergence_study(const char* advection, double min_rho_order, double min_p_order) {
   const ExactRiemann ex(kSodL, kSodR, 1.4);
-  Errors e[3];
-  const int n[3] = {100, 200, 400};
-  for (int k = 0; k < 3; ++k) {
-    test::IceRun r = run_tube(sod_deck(), n[k], advection);
+  constexpr int kRuns = 4;
+  Errors e[kRuns];
+  const int n[kRuns] = {100, 200, 400, 800};
+  for (int k = 0; k < kRuns; ++k) {
+    test::IceRun r = run_tube(n[k], advection);
     EXPECT_NEAR(r.time, 5e-4, 1e-15);
     e[k] = l1_errors(r, ex, 0.5);
     // Star-state plateau at the finest grid: the cell nearest the middle of
     // [contact, shock] (x = 0.643 .. 0.779 m at 0.5 ms).
-    if (k == 2) {
+    if (k == kRuns - 1) {
       const int mid = static_cast<int>(0.711 * n[k]);
       EXPECT_NEAR(r.ice->press_CC()[0](mid, 0, 0), ex.p_star(), 0.01 * ex.p_star());
       EXPECT_NEAR(r.ice->fields()[0].vel_CC[0](mid, 0, 0)[0], ex.u_star(), 0.01 * ex.u_star());
     }
   }
-  const double order_rho = std::log2(e[1].rho / e[2].rho), order_p = std::log2(e[1].p / e[2].p);
-  std::printf("Sod %s: L1(rho) %.4g %.4g %.4g  order %.3f %.3f | L1(p) %.4g %.4g %.4g  order %.3f %.3f\n", advection,
-              e[0].rho, e[1].rho, e[2].rho, std::log2(e[0].rho / e[1].rho), order_rho, e[0].p, e[1].p, e[2].p,
-              std::log2(e[0].p / e[1].p), order_p);
+  const double order_rho = std::log2(e[2].rho / e[3].rho), order_p = std::log2(e[2].p / e[3].p);
+  std::printf("Sod %s: L1(rho) %.4g %.4g %.4g %.4g order %.3f %.3f %.3f | L1(p) %.4g %.4g %.4g %.4g order %.3f %.3f %.3f\n",
+              advection, e[0].rho, e[1].rho, e[2].rho, e[3].rho, std::log2(e[0].rho / e[1].rho),
+              std::log2(e[1].rho / e[2].rho), order_rho, e[0].p, e[1].p, e[2].p, e[3].p, std::log2(e[0].p / e[1].p),
+              std::log2(e[1].p / e[2].p), order_p);
   EXPECT_GE(order_rho, min_rho_order);
   EXPECT_GE(order_p, min_p_order);
   return e[1];
@@ -144,6 +139,118 @@ TEST(IceRiemann, ToroTest1ConvergesToTheExactSolution) {
               e200.rho, std::log2(e100.rho / e200.rho));
   EXPECT_GE(order, 0.4);  // observed 0.50; a sonic rarefaction (Toro sec. 6.4 "entropy glitch") slows first order
   EXPECT_LT(e100.p, 0.03);  // the pressure jump is 0.9: a few percent smeared over cells
+}
+
+// Toro's tests 2-5 (Toro, "Riemann Solvers ...", 3rd ed., table 4.1 and sec.
+// 4.3.3), gamma = 1.4, on [0, 1] with the deck riemann.ups's set-up (c_v = 1,
+// Neumann ends, T = p/((gamma - 1) rho c_v) so the EOS gives the table's p):
+//   2: 1, -2, 0.4 | 1, 2, 0.4               x0 = 0.5, t = 0.15   (123 problem: near vacuum)
+//   3: 1, 0, 1000 | 1, 0, 0.01              x0 = 0.5, t = 0.012  (left half of Woodward-Colella)
+//   4: 5.99924, 19.5975, 460.894 | 5.99242, -6.19633, 46.0950   x0 = 0.4, t = 0.035 (shock collision)
+//   5: 1, -19.59745, 1000 | 1, -19.59745, 0.01                  x0 = 0.8, t = 0.012 (stationary contact)
+// Oracle: the runs finish (a non-positive rho_CC, temp_CC or sp_vol_CC stops
+// ICE with NumericalFailure) with rho_CC > 0 and press_CC > 0 in every cell
+// after every step. L1 errors against the exact solution are printed, not
+// asserted: they do not fall with N for tests 3-5 (second order) and 4 (both
+// orders) because ICE's internal-energy equation under-heats strong shocks
+// (docs/ice.md, "Sod and Toro"; Toro 4 at N = 200: rho behind the right shock
+// 42-49 instead of 31.04, p* 1625 instead of 1691.6).
+// Known gap, asserted so that a fix shows up: Toro 2 with SecondOrder stops
+// at step 83 (N = 100) with a negative sp_vol_CC in a nearly emptied cell
+// (compatible second-order fluxes of a specific quantity are not bounded
+// when a cell loses almost all its mass; first order is).
+struct ToroCase {
+  int id;
+  GasState L, R;
+  double x0, t_end;
+};
+const ToroCase kToro[] = {
+    {2, {1.0, -2.0, 0.4}, {1.0, 2.0, 0.4}, 0.5, 0.15},
+    {3, {1.0, 0.0, 1000.0}, {1.0, 0.0, 0.01}, 0.5, 0.012},
+    {4, {5.99924, 19.5975, 460.894}, {5.99242, -6.19633, 46.0950}, 0.4, 0.035},
+    {5, {1.0, -19.59745, 1000.0}, {1.0, -19.59745, 0.01}, 0.8, 0.012},
+};
+
+std::string toro_case_deck(const ToroCase& c, int n, const char* advection, double cfl) {
+  auto state = [](const GasState& s) {
+    std::ostringstream x;
+    x.precision(17);
+    x << "<res>[2,1,1]</res><velocity>[" << s.u << ",0,0]</velocity><density>" << s.rho << "</density><pressure>" << s.p
+      << "</pressure><temperature>" << s.p / (0.4 * s.rho) << "</temperature>";
+    return x.str();
+  };
+  std::ostringstream x;
+  const double h = 1.0 / n;
+  x << R"(<Uintah_specification><Meta><title>toro</title></Meta><SimulationComponent type="ice"/>
+  <Time><maxTime>)" << c.t_end << R"(</maxTime><initTime>0</initTime><delt_min>0</delt_min><delt_max>1</delt_max>
+  <delt_init>1e-8</delt_init></Time>
+  <DataArchiver><filebase>toro.uda</filebase><outputInterval>1</outputInterval></DataArchiver>
+  <CFD><cfl>)" << cfl << R"(</cfl><ICE><advection type=")" << advection << R"("/></ICE></CFD>
+  <PhysicalConstants><gravity>[0,0,0]</gravity><reference_pressure>101325</reference_pressure></PhysicalConstants>
+  <MaterialProperties><ICE><material><EOS type="ideal_gas"/><dynamic_viscosity>0</dynamic_viscosity>
+   <thermal_conductivity>0</thermal_conductivity><specific_heat>1</specific_heat><gamma>1.4</gamma>
+   <geom_object><difference><box label="all"><min>[-1,-1,-1]</min><max>[2,2,2]</max></box>
+     <box label="right"><min>[)" << c.x0 << R"(,-1,-1]</min><max>[2,2,2]</max></box></difference>)"
+    << state(c.L) << R"(</geom_object>
+   <geom_object><box label="right"/>)" << state(c.R) << R"(</geom_object></material></ICE></MaterialProperties>
+  <Grid><BoundaryConditions>)";
+  for (const char* side : {"x-", "x+"})
+    x << "<Face side=\"" << side << R"("><BCType id="0" label="Pressure" var="Neumann"><value>0</value></BCType>
+      <BCType id="0" label="Velocity" var="Neumann"><value>[0,0,0]</value></BCType>
+      <BCType id="0" label="Temperature" var="Neumann"><value>0</value></BCType>
+      <BCType id="0" label="Density" var="Neumann"><value>0</value></BCType>
+      <BCType id="0" label="SpecificVol" var="computeFromDensity"><value>0</value></BCType></Face>)";
+  for (const char* side : {"y-", "y+", "z-", "z+"})
+    x << "<Face side=\"" << side << R"("><BCType id="0" label="Symmetric" var="symmetry"/></Face>)";
+  x << R"(</BoundaryConditions><Level><Box label="1"><lower>[0,0,0]</lower><upper>[1,)" << h << "," << h
+    << R"(]</upper><resolution>[)" << n << R"(,1,1]</resolution><extraCells>[1,1,1]</extraCells>
+   <patches>[1,1,1]</patches></Box></Level></Grid></Uintah_specification>)";
+  return x.str();
+}
+
+struct ToroResult {
+  Errors e;
+  double min_rho = 1e300, min_p = 1e300;
+  int steps = 0;
+};
+
+ToroResult run_toro(const ToroCase& c, int n, const char* advection, double cfl) {
+  test::IceRun r;
+  r.deck = load_deck_from_string(toro_case_deck(c, n, advection, cfl), "toro.ups", ".");
+  r.ice = make_ice_component(*r.deck);
+  r.ice->initialize();
+  ToroResult out;
+  const Grid& g = r.ice->grid();
+  while (r.time < c.t_end * (1 - 1e-14)) {
+    const double dt = std::min(r.steps == 0 ? 1e-8 : r.ice->stable_timestep(), c.t_end - r.time);
+    r.ice->advance(r.time, dt, ++r.steps);
+    r.time += dt;
+    for (int i = 0; i < g.cells[0]; ++i) {
+      out.min_rho = std::min(out.min_rho, r.ice->fields()[0].rho_CC[0](i, 0, 0));
+      out.min_p = std::min(out.min_p, r.ice->press_CC()[0](i, 0, 0));
+    }
+  }
+  out.steps = r.steps;
+  out.e = l1_errors(r, ExactRiemann(c.L, c.R, 1.4), c.x0);
+  return out;
+}
+
+TEST(IceRiemann, ToroTests2To5KeepDensityAndPressurePositive) {
+  set_thread_count(1);
+  for (const ToroCase& c : kToro) {
+    for (const char* adv : {"FirstOrder", "SecondOrder"}) {
+      if (c.id == 2 && std::string(adv) == "SecondOrder") {
+        EXPECT_THROW(run_toro(c, 100, adv, 0.4), NumericalFailure) << "Toro 2 second order now runs: assert positivity";
+        continue;
+      }
+      const ToroResult a = run_toro(c, 100, adv, 0.4), b = run_toro(c, 200, adv, 0.4);
+      std::printf("Toro %d %s: N=100/200 L1(rho) %.4g %.4g  L1(u) %.4g %.4g  L1(p) %.4g %.4g; min rho %.3g, min p %.3g (%d steps)\n",
+                  c.id, adv, a.e.rho, b.e.rho, a.e.u, b.e.u, a.e.p, b.e.p, std::min(a.min_rho, b.min_rho),
+                  std::min(a.min_p, b.min_p), b.steps);
+      EXPECT_GT(std::min(a.min_rho, b.min_rho), 0.0) << "Toro " << c.id << " " << adv;
+      EXPECT_GT(std::min(a.min_p, b.min_p), 0.0) << "Toro " << c.id << " " << adv;
+    }
+  }
 }
 
 }  // namespace
