@@ -25,7 +25,12 @@
 
 #include <Eigen/LU>
 
+#include "core/deck/DeckLoader.h"
+#include "core/deck/Validate.h"
 #include "core/grid/Loop.h"
+#include "mpm/DeckModelParameters.h"
+#include "models/solid/CompNeoHookPlastic.h"
+#include "tests/support/TestPaths.h"
 #include "tests/support/PrescribedDriver.h"
 
 namespace tephra {
@@ -165,6 +170,32 @@ TEST(ModelCompNeoHookPlasticDriver, LinearHardeningUniaxialStrainConverges) {
     prev = err;
   }
   EXPECT_LT(prev, 1e-3 * exact);
+}
+
+// The MPMICE decks that use comp_neo_hook_plastic (useModifiedEOS, strain_limit,
+// reduction_factor): their MPM materials' models are read as the MPM deck reader
+// reads them (every child used), with the deck's values.
+TEST(ModelCompNeoHookPlasticDriver, MpmiceDeckMaterialsAreRead) {
+  for (const char* name : {"advect.ups", "JWLppCuRS2d.ups", "QM100CuRS.ups"}) {
+    const auto deck = load_deck(test::shared_dir() + "/decks/inputs/MPMICE/" + name);
+    validate_deck(*deck);  // the schema accepts the model's children
+    const DeckNode& mpm = deck->root.require_child("MaterialProperties").require_child("MPM");
+    int read = 0;
+    for (const DeckNode* mat : mpm.children_named("material")) {
+      const DeckNode& cm = mat->require_child("constitutive_model");
+      if (cm.require_attribute("type") != "comp_neo_hook_plastic") continue;
+      DeckModelParameters params(cm);
+      const ConstitutiveModelP m = create_constitutive_model("comp_neo_hook_plastic", params);
+      ASSERT_TRUE(m) << name;
+      params.check_all_used("comp_neo_hook_plastic");
+      const auto& p = dynamic_cast<const CompNeoHookPlastic&>(*m).params();
+      EXPECT_TRUE(p.use_plasticity && p.use_modified_eos) << name;
+      EXPECT_EQ(p.yield_stress, 70.0e6) << name;
+      EXPECT_EQ(p.hardening_modulus, 43.8e5) << name;
+      ++read;
+    }
+    EXPECT_EQ(read, 1) << name;
+  }
 }
 
 }  // namespace
