@@ -169,6 +169,9 @@ ConstitutiveModelP CompNeoHookPlastic::create(const ModelParameters& params, con
     const std::string t = eos->type_attribute();
     if (t != "default_hyper")
       params.missing_feature("equation_of_state", type + " <equation_of_state type=\"" + t + "\">");
+    // Vaango's UCNH overrides the EOS block's bulk modulus with <bulk_modulus>
+    // (d_eos->setBulkModulus): the value is read and not used.
+    eos->get_double("bulk_modulus", 0.0);
   }
   // <strain_limit>, <reduction_factor> (in the MPMICE decks) belong to Vaango's
   // retired CompNeoHookPlas and are not read by UCNH either: accepted, unused.

@@ -184,6 +184,12 @@ TEST(ModelCompNeoHookPlastic, DeckChecks) {
   EXPECT_TRUE(create_constitutive_model("UCNH", no_yield));
   EXPECT_FALSE(make({{"usePlasticity", 1}}, "UCNH")->hyperelastic());
   EXPECT_EQ(make({{"usePlasticity", 1}}, "UCNH")->type(), "UCNH");
+  // <equation_of_state>: only Vaango's default (HyperElasticEOS, K from <bulk_modulus>).
+  test::MapModelParameters with_eos({{"bulk_modulus", kK}, {"shear_modulus", kG}});
+  with_eos.add_block("equation_of_state", "default_hyper", {{"bulk_modulus", 1.0}});
+  EXPECT_EQ(create_constitutive_model("UCNH", with_eos)->bulk_modulus(), kK);
+  with_eos.add_block("equation_of_state", "mie_gruneisen");
+  EXPECT_THROW(create_constitutive_model("UCNH", with_eos), std::logic_error);  // MissingFeature
 }
 
 }  // namespace
