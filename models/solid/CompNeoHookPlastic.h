@@ -21,14 +21,16 @@
 // The consistency |s_{n+1}| = sqrt(2/3)(sigma_y + H alpha_{n+1}) holds exactly.
 // The volume-preserving choice of x (Simo & Hughes §9.3.2, the det bbar_e = 1
 // correction) keeps det F_p = 1 exactly; Vaango's UCNH uses x = I_e, which
-// differs at O(dgamma^2). The stress of the step is the same.
+// differs by O(dgamma |s|/G) per plastic step (its det bbar_e drifts). The
+// stress of the step is the same.
 // Without plasticity (UCNH default) bbar = J^{-2/3} F F^T: the comp_neo_hook stress.
 //
 // Outputs: W = K/2[(J^2-1)/2 - ln J] + G/2 (tr bbar_e - 3) per reference volume
 // (Vaango's StrainEnergy sum); c^2 = (K_t + 4G/3)/rho with K_t = K/2 (1 + 1/J^2);
-// plastic work per reference volume = s_{n+1} : (dgamma n) = |s_{n+1}| dgamma
-// (Kirchhoff stress power of the plastic flow over the step); heating 0 (Vaango's
-// UCNH sets pdTdt = 0).
+// plastic work per reference volume = the stored energy the return releases at
+// fixed F, Psi(bbar_trial) - Psi(bbar_{n+1}) = 3G/2 (I_e - x) (closes the
+// balance stress work = Psi + dissipation; |s| dgamma agrees to O(|s|/G));
+// heating 0 (Vaango's UCNH sets pdTdt = 0).
 //
 // MPMICE hooks: the standard EOS as comp_neo_hook. <useModifiedEOS> (Vaango
 // UCNH::computePressEOSCM): for rho < rho0 the absolute pressure is

@@ -4,7 +4,8 @@
 //   - elastic branch: the comp_neo_hook stress K/2 (J - 1/J) I + (G/J) dev(J^{-2/3} F F^T);
 //   - yield consistency after a plastic step: |s| = sqrt(2/3) (sigma_y + H alpha);
 //   - plastic incompressibility: det bbar_e = 1, i.e. det F_p = (det bbar_e)^{-1/2} = 1;
-//   - one-step closed form of the return from the reference state (below);
+//   - one-step closed form of the return from the reference state (below), its
+//     dissipation Psi(bbar_trial) - Psi(bbar_1);
 //   - Vaango's modified EOS (UCNH::computePressEOSCM) and its inverse.
 #include <gtest/gtest.h>
 
@@ -94,6 +95,10 @@ TEST(ModelCompNeoHookPlastic, YieldConsistencyAndPlasticIncompressibility) {
       const Mat3 F = t <= 1 ? Mat3(Mat3::Identity() + t * (F1 - Mat3::Identity()))
                             : Mat3((Mat3::Identity() + (t - 1) * (F2 - Mat3::Identity())) * F1);
       const double alpha_old = s.history[1][0];
+      // The elastic trial state at the new F: fbar bbar_n fbar^T, fbar = det(f)^{-1/3} f.
+      const Mat3 f = F * s.F.inverse();
+      const Mat3 fbar = std::cbrt(1.0 / f.determinant()) * f;
+      const Mat3 bbar_trial = fbar * bbar_of(s) * fbar.transpose();
       ASSERT_EQ(test::step_point(*m, kRho0, s, F, 1e-4), -1);
       const double alpha = s.history[1][0];
       EXPECT_NEAR(bbar_of(s).determinant(), 1.0, 1e-12);  // det F_p = 1
@@ -101,8 +106,12 @@ TEST(ModelCompNeoHookPlastic, YieldConsistencyAndPlasticIncompressibility) {
         ++plastic_steps;
         const double yield = std::sqrt(2.0 / 3.0) * (kSy + kH * alpha);
         EXPECT_NEAR(dev_tau(s).norm(), yield, 1e-10 * yield);
-        // Plastic work of the step = |s| dgamma = (sigma_y + H alpha) (alpha - alpha_old).
-        EXPECT_NEAR(s.plastic_work, (kSy + kH * alpha) * (alpha - alpha_old), 1e-10 * s.plastic_work);
+        // Dissipation of the step: the energy the return releases at fixed F,
+        // G/2 (tr bbar_trial - tr bbar_{n+1}) > 0; it exceeds (sigma_y + H alpha) dalpha
+        // (by ~ G dgamma^2, the backward-Euler return's share; the sum converges, see
+        // the driver's energy-balance test).
+        EXPECT_NEAR(s.plastic_work, 0.5 * kG * (bbar_trial.trace() - bbar_of(s).trace()), 1e-6 * s.plastic_work);
+        EXPECT_GT(s.plastic_work, (kSy + kH * alpha) * (alpha - alpha_old) * (1 - 1e-2));
         // s = G dev(bbar_e): the stored elastic state carries the returned stress.
         const Mat3 b = bbar_of(s);
         EXPECT_LE((kG * (b - b.trace() / 3.0 * Mat3::Identity()) - dev_tau(s)).norm(), 1e-10 * yield);
@@ -132,6 +141,9 @@ TEST(ModelCompNeoHookPlastic, OneStepReturnClosedForm) {
   EXPECT_NEAR(s.stress(0, 0), s11, 1e-10 * kSy);  // J = 1: sigma = s
   EXPECT_NEAR(s.stress(1, 1), -s11 / 2, 1e-10 * kSy);
   EXPECT_NEAR(s.stress(0, 1), 0.0, 1e-10 * kSy);
+  // Dissipation = Psi(bbar_trial) - Psi(bbar_1) = G/2 (tr bbar_trial - tr bbar_1).
+  EXPECT_NEAR(s.plastic_work, 0.5 * kG * (l * l + 2 / l - bbar_of(s).trace()), 1e-6);
+  EXPECT_GT(s.plastic_work, 0.0);
 }
 
 TEST(ModelCompNeoHookPlastic, InitialAlphaRaisesTheYieldStress) {
