@@ -54,6 +54,7 @@ bool CompNeoHookPlastic::update_point(const Eigen::Matrix3d& F_old, const Eigen:
     const Eigen::Matrix3d f = F_new * F_old.inverse();
     const Eigen::Matrix3d fbar = std::cbrt(J_old / J) * f;  // det f = J / J_old
     bbar_trial = fbar * Eigen::Matrix3d(bbar) * fbar.transpose();
+    bbar_trial = (0.5 * (bbar_trial + bbar_trial.transpose())).eval();  // exact symmetry: no round-off drift
   } else {
     bbar_trial = std::pow(J, -2.0 / 3.0) * (F_new * F_new.transpose());
   }
