@@ -7,6 +7,7 @@
 #include "models/solid/CnhMms.h"
 #include "models/solid/CompMooneyRivlin.h"
 #include "models/solid/CompNeoHookean.h"
+#include "models/solid/CompNeoHookPlastic.h"
 #include "models/solid/ElasticPlastic.h"
 #include "models/solid/ElasticPlasticHP.h"
 #include "models/solid/ConstitutiveModel.h"
@@ -24,11 +25,14 @@ const std::map<std::string, Creator>& creators() {
       {"cnh_mms", &CnhMms::create},
       {"comp_mooney_rivlin", &CompMooneyRivlin::create},
       {"comp_neo_hook", &CompNeoHookean::create},
+      {"comp_neo_hook_plastic",
+       [](const ModelParameters& p) { return CompNeoHookPlastic::create(p, "comp_neo_hook_plastic"); }},
       {"elastic_plastic", &ElasticPlastic::create},
       {"elastic_plastic_hp", &ElasticPlasticHP::create},
       {"hypo_elastic", &HypoElastic::create},
       {"rigid", &RigidMaterial::create},
       {"visco_scram", &ViscoScram::create},
+      {"UCNH", [](const ModelParameters& p) { return CompNeoHookPlastic::create(p, "UCNH"); }},
   };
   return table;
 }

@@ -71,6 +71,8 @@ PrescribedHistory drive_prescribed(const std::string& model_xml, const std::vect
       hist.insert(hist.end(), column.begin(), column.begin() + long(k));
     }
     out.history.push_back(std::move(hist));
+    const auto& work = c->materials()[0].plastic_work;
+    out.plastic_work.push_back(work.empty() ? 0.0 : work[0]);
     const auto r = c->reductions({"StrainEnergy", "AccStrainEnergy"});
     out.strain_energy.push_back(r.at("StrainEnergy").at(0));
     out.acc_strain_energy.push_back(r.at("AccStrainEnergy").at(0));

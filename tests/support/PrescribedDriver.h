@@ -29,6 +29,7 @@ struct PrescribedHistory {
   std::vector<Mat3> F;       // particle 0's deformation gradient
   std::vector<Mat3> stress;  // its Cauchy stress (tension positive)
   std::vector<std::vector<double>> history;  // its model history columns, flattened, per sample
+  std::vector<double> plastic_work;          // its model's dissipation of the step per reference volume [J/m^3]
   std::vector<double> strain_energy;      // reductions over the cell: StrainEnergy = sum W(F) V0 [J]
   std::vector<double> acc_strain_energy;  //   and AccStrainEnergy, the accumulated stress work [J]
 };

@@ -68,6 +68,11 @@ inline const std::map<std::string, std::map<std::string, double>>& sample_solid_
       // Vaango's const_test_cmr.ups: G = 2 (C1 + C2) = 2.4e5, nu = 0.49.
       {"comp_mooney_rivlin", {{"he_constant_1", 1.0e5}, {"he_constant_2", 2.0e4}, {"he_PR", 0.49}}},
       {"rigid", {}},
+      // Yields at a shear strain of ~ sigma_y / (sqrt(3) G) = 6e-3 (the contracts see both branches).
+      {"comp_neo_hook_plastic",
+       {{"bulk_modulus", 8.0e9}, {"shear_modulus", 3.0e9}, {"yield_stress", 3.0e7}, {"hardening_modulus", 1.0e8}}},
+      // UCNH defaults to usePlasticity = false: the comp_neo_hook stress (hyperelastic contracts).
+      {"UCNH", {{"bulk_modulus", 8.0e9}, {"shear_modulus", 3.0e9}}},
       // Blocks and material values: sample_solid_blocks().
       {"elastic_plastic_hp", {{"bulk_modulus", 8.0e9}, {"shear_modulus", 3.0e9}, {"taylor_quinney_coeff", 0.9}}},
       // Vaango's defaults otherwise (alpha = 1e-5: the thermal term is exercised, T_0 = the first T).

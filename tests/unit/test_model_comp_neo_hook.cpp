@@ -135,8 +135,8 @@ TEST(ModelCompNeoHook, RegistryCreatesAndValidates) {
   EXPECT_EQ(m->shear_modulus(), 384.6);
   EXPECT_EQ(create_constitutive_model("no_such_model", p), nullptr);
   EXPECT_EQ(constitutive_model_types(),
-            (std::vector<std::string>{"cnh_mms", "comp_mooney_rivlin", "comp_neo_hook", "elastic_plastic", "elastic_plastic_hp",
-                                      "hypo_elastic", "rigid", "visco_scram"}));
+            (std::vector<std::string>{"UCNH", "cnh_mms", "comp_mooney_rivlin", "comp_neo_hook", "comp_neo_hook_plastic",
+                                      "elastic_plastic", "elastic_plastic_hp", "hypo_elastic", "rigid", "visco_scram"}));
   p.values["shear_modulus"] = -1;
   EXPECT_THROW(create_constitutive_model("comp_neo_hook", p), std::invalid_argument);
   p.values["shear_modulus"] = 384.6;
