@@ -16,6 +16,7 @@
 #include "mpm/GridDamping.h"
 #include "mpm/PressureStabilization.h"
 #include "mpm/Transfers.h"
+#include "mpm/UpdatedGridVelocity.h"
 #include "mpm/contact/ContactNormals.h"
 
 namespace tephra {
@@ -83,6 +84,11 @@ double MpmComponent::material_stable_timestep(const MpmMaterial& m) const {
 
 // The step size computed by the last stress update (initialize() or advance()).
 double MpmComponent::stable_timestep() const { return stable_dt_; }
+
+// max_p,d dt (c_p + |v_p,d|) / h_d of a material: the Courant number of this step.
+double MpmComponent::courant_number(const MpmMaterial& m, double dt) const {
+  return dt / material_stable_timestep(m);
+}
 
 void MpmComponent::fail_particle(const MpmMaterial& m, std::size_t i, int step, const std::string& phase,
                                  const std::string& what) const {
@@ -321,13 +327,34 @@ void MpmComponent::advance(double t, double dt, int step) {
     const Mat3 l = setup_.prescribed->step_velocity_gradient(t, dt);
     for (MpmMaterial& m : mats) set_prescribed_grid_velocity(l, dt, m.grid);
   }
-  // 9. l_p = sum v*_g grad S^T, F_{n+1} = (I + dt l) F_n (Alg. 9, eqs. 1.73-1.75);
+  // 9. l_p = sum v_g grad S^T, F_{n+1} = (I + dt l) F_n (Alg. 9, eqs. 1.73-1.75);
   //    F_n is kept as the model's input; a rigid material keeps F = I (VT eq. 3.1).
+  //    v_g is the P2G of the updated particle velocities (MUSL, mpm/UpdatedGridVelocity.h)
+  //    under the same grid BCs and contact as v*_g, not Vaango's v*_g: it stays bounded
+  //    at small-mass nodes. A prescribed deformation sets v*_g = l x_g exactly: l_p from v*_g.
   {
     PhaseTimers::Scope timer(phase_timers(), "MPM: compute deformation gradient");
-    for (MpmMaterial& m : mats) {
+    const bool musl = !setup_.prescribed;
+    if (musl) {
+      musl_velocity_.resize(mats.size());
+      for (std::size_t i = 0; i < mats.size(); ++i) {
+        MpmMaterial& m = mats[i];
+        updated_particle_grid_velocity(m.particles, m.stencils, m.grid, dt,
+                                       periodic_.active() ? &periodic_.canonical : nullptr, musl_velocity_[i]);
+        m.bcs.apply(m.grid, musl_velocity_[i]);
+        std::swap(m.grid.velocity_star, musl_velocity_[i]);  // l_p and contact read g.velocity_star
+      }
+      if (contact) exchange_momentum(ContactStage::Integrated, t, dt);
+      const double cell_volume = setup_.grid.dx[0] * setup_.grid.dx[1] * setup_.grid.dx[2];
+      for (std::size_t i = 0; i < mats.size(); ++i)  // v*_g back where USL is stable for the node
+        keep_stable_usl_nodes(mats[i].grid, usl_fill_limit(courant_number(mats[i], dt)), cell_volume,
+                              musl_velocity_[i], mats[i].grid.velocity_star);
+    }
+    for (std::size_t i = 0; i < mats.size(); ++i) {
+      MpmMaterial& m = mats[i];
       if (setup_.flags.axisymmetric) axisymmetric_velocity_gradients(m.stencils, m.grid, m.L);  // + v_r / r
       else velocity_gradients(m.stencils, m.grid, m.L);
+      if (musl) std::swap(m.grid.velocity_star, musl_velocity_[i]);  // G2P moves the particles with v*_g
       Particles& p = m.particles;
       m.F_old = p.F;
       // <deformation_gradient algorithm>: first_order is eq. 1.75; the series

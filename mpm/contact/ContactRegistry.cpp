@@ -95,6 +95,15 @@ SpecifiedParameters read_specified(const DeckNode& contact, int material_count) 
     }
   }
   p.normal_only = contact.get_bool("normal_only", false);
+  // Vaango's direction-based exchange (SpecifiedBodyContact::computeDirectionBasedExchange)
+  // loops over every MPM material and never consults <materials>; only the normal_only
+  // exchange skips materials not requested. Stock decks rely on this: the Taylor-impact
+  // decks (MPM/Impact/cylinderImpact_*.ups) list only the wall, <materials>[0], and the
+  // wall must still stop the rod. So the direction-based rigid body acts on all materials.
+  if (!p.normal_only) {
+    p.materials.clear();
+    for (int m = 0; m < material_count; ++m) p.materials.push_back(m);
+  }
   p.volume_constraint = non_negative(contact, "volume_constraint", 0.0);
   p.stop_time = contact.get_double("stop_time", p.stop_time);
   p.velocity_after_stop = contact.get_vec3("velocity_after_stop", Vec3::Zero());

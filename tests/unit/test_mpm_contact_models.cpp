@@ -290,6 +290,35 @@ void throws(const std::string& xml) {
 // myu V_cell, phi = w V_g / V_cell, and v_b += f_b dt / (w m_b),
 // v_a -= f_b dt / (w m_a), w = 2^(boundary directions of the node).
 // Nodes with one material are left alone.
+// Vaango's direction-based SpecifiedBodyContact loops over every material and ignores
+// <materials>: the Taylor-impact decks (cylinderImpact_*.ups) name only the wall,
+// <materials>[0], and the wall still stops the rod. With <direction>[0,1,0] the rod's
+// y velocity at a wall node becomes the wall's (0 here), x and z are untouched.
+TEST(MpmContactModels, DirectionBasedRigidContactActsOnEveryMaterial) {
+  std::vector<NodeGrid> g(2);
+  for (NodeGrid& x : g) {
+    x.n = IntVec3(2, 2, 2);
+    x.reset();
+    x.volume.assign(8, 1.0);
+    x.mass.assign(8, 1.0);
+  }
+  g[0].velocity.assign(8, Vec3::Zero());
+  g[0].velocity_star.assign(8, Vec3::Zero());
+  g[1].velocity_star.assign(8, Vec3(1, -227, 3));
+  auto model = parse_contact(deck("<contact><type>rigid</type><materials>[0]</materials><direction>[0,1,0]</direction>"
+                                  "</contact>")
+                                 ->root.require_child("contact"),
+                             2);
+  ContactNodes n;
+  n.grid = {&g[0], &g[1]};
+  n.velocity = {&g[0].velocity_star, &g[1].velocity_star};
+  n.h = Vec3::Ones();
+  n.t = 0.0;
+  n.dt = 1e-3;
+  model->exchange(ContactStage::Integrated, n);
+  for (int i = 0; i < 8; ++i) EXPECT_EQ(g[1].velocity_star[i], Vec3(1, 0, 3)) << "node " << i;
+}
+
 TEST(MpmContactModels, NodalSvfDragIsTheClosedForm) {
   for (bool use_svf : {true, false}) {
     RandomNodes r(2, 31u, ContactStage::Integrated);
