@@ -84,11 +84,7 @@ class ElasticPlastic final : public ConstitutiveModel {
   // st: the state at t_n (eps_p, T, rho, p̄, mu, T_m, sigma_e); c = chi/(rho C_p) (0: isothermal).
   Return plastic_return(double q_trial, double mu, double dt, const PlasticState& st, double c) const;
 
-  struct PointOut {
-    SolidPointResult r;
-    double plastic_work = 0.0;
-    double heating = 0.0;
-  };
+  using PointOut = MetalPointOut;
   // hist: this model's history of the point (history() order), read at t_n, overwritten with t_{n+1}.
   bool update_point(const Eigen::Matrix3d& F_old, const Eigen::Matrix3d& F_new, const Eigen::Matrix3d& stress_old,
                     double T, double dt, double density0, double* hist, PointOut& out) const;

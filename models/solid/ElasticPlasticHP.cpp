@@ -9,7 +9,7 @@
 
 #include "models/ModelParameters.h"
 #include "models/solid/Kinematics.h"
-#include "models/solid/PointLoop.h"
+#include "models/solid/MetalPointLoop.h"
 #include "models/solid/SubModelAssembly.h"
 
 namespace tephra {
@@ -125,20 +125,7 @@ bool ElasticPlasticHP::update_point(const Eigen::Matrix3d& F_old, const Eigen::M
 }
 
 long ElasticPlasticHP::update(const SolidUpdateInput& in, const SolidUpdateOutput& out) const {
-  return for_each_point(in.F_new.size(), [&](size_t i) {
-    double hist[kHistoryCount];
-    for (int k = 0; k < kHistoryCount; ++k) hist[k] = out.history[k][i];
-    PointOut po;
-    if (!update_point(in.F_old[i], in.F_new[i], in.stress_old[i], in.temperature[i], in.dt, in.density0, hist, po))
-      return false;
-    for (int k = 0; k < kHistoryCount; ++k) out.history[k][i] = hist[k];
-    out.stress[i] = po.r.stress;
-    out.wave_speed[i] = po.r.wave_speed;
-    out.energy_density[i] = po.r.energy_density;
-    out.plastic_work[i] = po.plastic_work;
-    out.heating[i] = po.heating;
-    return true;
-  });
+  return update_metal_points<kHistoryCount>(*this, kHistoryCount, in, out);
 }
 
 ConstitutiveModelP ElasticPlasticHP::create(const ModelParameters& params) {

@@ -61,11 +61,7 @@ class ElasticPlasticHP final : public ConstitutiveModel {
 
   // The point update (what update() does for one point; unit tests call it).
   // hist = {ε_p, ε̇_p, φ, D, localized}, read at t_n and overwritten with t_{n+1}.
-  struct PointOut {
-    SolidPointResult r;
-    double plastic_work = 0.0;
-    double heating = 0.0;
-  };
+  using PointOut = MetalPointOut;
   bool update_point(const Eigen::Matrix3d& F_old, const Eigen::Matrix3d& F_new, const Eigen::Matrix3d& stress_old,
                     double T, double dt, double density0, double* hist, PointOut& out) const;
 

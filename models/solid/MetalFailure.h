@@ -32,8 +32,16 @@
 #include "models/ModelParameters.h"
 #include "models/plasticity/PlasticState.h"
 #include "models/plasticity/YieldCondition.h"
+#include "models/solid/ConstitutiveModel.h"
 
 namespace tephra {
+
+// What a composed metal model's point update returns besides its history.
+struct MetalPointOut {
+  SolidPointResult r;
+  double plastic_work = 0.0;  // dissipated work of the step per V0 [J/m^3]
+  double heating = 0.0;       // adiabatic heating rate dT/dt [K/s]
+};
 
 struct MetalFailureParams {
   bool evolve_porosity = true;

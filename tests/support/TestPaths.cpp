@@ -5,6 +5,9 @@
 #include <array>
 #include <cstdio>
 #include <filesystem>
+#include <regex>
+
+#include "core/io/detail/Files.h"
 
 namespace tephra::test {
 
@@ -31,6 +34,13 @@ int run_tephra(const std::string& args, std::string* output) {
   if (output) *output = out;
   if (WIFEXITED(status)) return WEXITSTATUS(status);
   return 128 + (WIFSIGNALED(status) ? WTERMSIG(status) : 0);  // a crash
+}
+
+std::string slurp(const std::string& path) { return files::read_all(path); }
+
+bool has_non_finite(const std::string& text) {
+  static const std::regex bad("(nan|inf)", std::regex::icase);
+  return std::regex_search(text, bad);
 }
 
 }  // namespace tephra::test

@@ -14,4 +14,10 @@ std::string scratch_dir(const std::string& name);  // a fresh, empty folder for 
 // stdout+stderr into `output`.
 int run_tephra(const std::string& args, std::string* output = nullptr);
 
+// The whole file as text (throws when it cannot be opened).
+std::string slurp(const std::string& path);
+// True when `text` holds a "nan" or "inf" (any case): a .dat file or CSV that
+// wrote a non-finite number.
+bool has_non_finite(const std::string& text);
+
 }  // namespace tephra::test

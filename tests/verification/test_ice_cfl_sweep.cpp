@@ -26,17 +26,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-bool has_non_finite(const std::string& text) {
-  static const std::regex bad("(nan|inf)", std::regex::icase);
-  return std::regex_search(text, bad);
-}
+using test::has_non_finite;
+using test::slurp;
 
 TEST(IceCflSweep, SodStopsCleanlyAboveTheLimit) {
   std::string deck = slurp(test::shared_dir() + "/decks/inputs/ICE/riemann_sm.ups");
@@ -59,7 +50,7 @@ TEST(IceCflSweep, SodStopsCleanlyAboveTheLimit) {
     EXPECT_TRUE(code == 0 || code == 4) << "cfl " << value << ": exit " << code << "\n" << out;
     if (code == 4) EXPECT_NE(out.find("step"), std::string::npos) << out;
     for (const auto& e : fs::directory_iterator(dir / "out"))
-      if (e.path().extension() == ".dat") EXPECT_FALSE(has_non_finite(slurp(e.path()))) << "cfl " << value;
+      if (e.path().extension() == ".dat") EXPECT_FALSE(has_non_finite(slurp(e.path().string()))) << "cfl " << value;
     for (const char* label : {"rho_CC", "press_CC", "vel_CC"}) {
       std::string csv;
       EXPECT_EQ(test::run_tephra("extract " + (dir / "out").string() + " --var " + label + " --step last", &csv), 0)

@@ -31,6 +31,7 @@
 #include "core/deck/DeckLoader.h"
 #include "core/grid/Loop.h"
 #include "mpm/MpmComponent.h"
+#include "tests/support/BarProfile.h"
 #include "tests/support/TestPaths.h"
 
 namespace tephra {
@@ -43,37 +44,7 @@ DeckNode& child(DeckNode& n, const std::string& name) {
   return n;
 }
 
-struct BarProfile {
-  double front = 0;           // x where v_x crosses v0/2, scanning from the undisturbed end
-  double mean_stress = 0;     // mean sigma_xx over [front - 0.15, front - 0.05]
-  double min_stress = 0;      // most compressive sigma_xx anywhere
-};
-
-BarProfile profile(const Particles& p, double v0) {
-  std::vector<std::size_t> order(p.size());
-  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-  std::sort(order.begin(), order.end(), [&](auto a, auto b) { return p.x[a][0] < p.x[b][0]; });
-  BarProfile r;
-  for (std::size_t k = order.size() - 1; k > 0; --k) {
-    const std::size_t a = order[k - 1], b = order[k];
-    if (p.v[a][0] >= 0.5 * v0 && p.v[b][0] < 0.5 * v0) {
-      const double s = (0.5 * v0 - p.v[a][0]) / (p.v[b][0] - p.v[a][0]);
-      r.front = p.x[a][0] + s * (p.x[b][0] - p.x[a][0]);
-      break;
-    }
-  }
-  double sum = 0;
-  int n = 0;
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    r.min_stress = std::min(r.min_stress, p.stress[i](0, 0));
-    if (p.x[i][0] > r.front - 0.15 && p.x[i][0] < r.front - 0.05) {
-      sum += p.stress[i](0, 0);
-      ++n;
-    }
-  }
-  r.mean_stress = sum / n;
-  return r;
-}
+using test::BarProfile;
 
 TEST(MpmBarWave, WaveSpeedAndStressBehindTheFront) {
   // One thread: ctest runs tests side by side on the two cores, and the
@@ -103,7 +74,7 @@ TEST(MpmBarWave, WaveSpeedAndStressBehindTheFront) {
       c->advance(t, dt, ++step);
       t += dt;
     }
-    (t_stop == t1 ? p1 : p2) = profile(c->materials()[0].particles, v0);
+    (t_stop == t1 ? p1 : p2) = test::bar_profile(c->materials()[0].particles, v0);
   }
   const double c_observed = (p2.front - p1.front) / (t2 - t1);
   RecordProperty("wave_speed_relative_error", std::to_string(c_observed / c_exact - 1));

@@ -28,42 +28,13 @@
 #include "core/deck/DeckLoader.h"
 #include "core/grid/Loop.h"
 #include "mpm/MpmComponent.h"
+#include "tests/support/BarProfile.h"
 #include "tests/support/TestPaths.h"
 
 namespace tephra {
 namespace {
 
-struct Profile {
-  double front = 0;        // x where v_x crosses v0/2, scanning from the undisturbed end
-  double mean_stress = 0;  // mean sigma_xx over [front - 0.15, front - 0.05]
-  double mean_velocity = 0;
-};
-
-Profile profile(const Particles& p, double v0) {
-  std::vector<std::size_t> order(p.size());
-  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-  std::sort(order.begin(), order.end(), [&](auto a, auto b) { return p.x[a][0] < p.x[b][0]; });
-  Profile r;
-  for (std::size_t k = order.size() - 1; k > 0; --k) {
-    const std::size_t a = order[k - 1], b = order[k];
-    if (p.v[a][0] >= 0.5 * v0 && p.v[b][0] < 0.5 * v0) {
-      const double s = (0.5 * v0 - p.v[a][0]) / (p.v[b][0] - p.v[a][0]);
-      r.front = p.x[a][0] + s * (p.x[b][0] - p.x[a][0]);
-      break;
-    }
-  }
-  double ss = 0, sv = 0;
-  int n = 0;
-  for (std::size_t i = 0; i < p.size(); ++i)
-    if (p.x[i][0] > r.front - 0.15 && p.x[i][0] < r.front - 0.05) {
-      ss += p.stress[i](0, 0);
-      sv += p.v[i][0];
-      ++n;
-    }
-  r.mean_stress = ss / n;
-  r.mean_velocity = sv / n;
-  return r;
-}
+using test::BarProfile;
 
 TEST(MpmPressureBar, StepPressureGivesStressMinusPBehindTheFront) {
   set_thread_count(1);
@@ -101,14 +72,14 @@ TEST(MpmPressureBar, StepPressureGivesStressMinusPBehindTheFront) {
   const double t1 = 0.3e-3, t2 = 0.6e-3;
   double t = 0;
   int step = 0;
-  Profile r1, r;
+  BarProfile r1, r;
   for (double t_stop : {t1, t2}) {
     while (t < t_stop) {
       const double dt = std::min(multiplier * c->stable_timestep(), t_stop - t);
       c->advance(t, dt, ++step);
       t += dt;
     }
-    (t_stop == t1 ? r1 : r) = profile(c->materials()[0].particles, v0);
+    (t_stop == t1 ? r1 : r) = test::bar_profile(c->materials()[0].particles, v0);
   }
   const double c_observed = (r.front - r1.front) / (t2 - t1);
   std::printf("pressure bar: sigma_xx behind the front %.1f Pa (exact %.1f, error %.3f %%), v %.4f m/s "

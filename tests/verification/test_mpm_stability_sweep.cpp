@@ -24,17 +24,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-bool has_non_finite(const std::string& text) {
-  static const std::regex bad("(nan|inf)", std::regex::icase);
-  return std::regex_search(text, bad);
-}
+using test::has_non_finite;
+using test::slurp;
 
 // Runs `deck_text` at each multiplier; returns the largest multiplier that
 // completed with exit 0 below the first failure (0 if 0.1 fails).
@@ -60,7 +51,7 @@ double sweep(const std::string& name, const std::string& deck_text, const std::s
     if (code == 4) EXPECT_NE(out.find("MPM step"), std::string::npos) << out;  // names step and particle
     for (const auto& e : fs::directory_iterator(dir / "out"))
       if (e.path().extension() == ".dat")
-        EXPECT_FALSE(has_non_finite(slurp(e.path()))) << name << " multiplier " << value << ": " << e.path();
+        EXPECT_FALSE(has_non_finite(slurp(e.path().string()))) << name << " multiplier " << value << ": " << e.path();
     std::string csv;
     EXPECT_EQ(test::run_tephra("extract " + (dir / "out").string() + " --var p.stress --step last", &csv), 0) << csv;
     EXPECT_FALSE(has_non_finite(csv)) << name << " multiplier " << value << ": last frame";

@@ -1,0 +1,34 @@
+#pragma once
+// The update() loop shared by the composed metal models (elastic_plastic,
+// elastic_plastic_hp): copy the point's history columns into a local array,
+// call the model's update_point, write history and outputs back. Included
+// only by those two models' .cpp files.
+#include <cstddef>
+
+#include "models/solid/ConstitutiveModel.h"
+#include "models/solid/PointLoop.h"
+
+namespace tephra {
+
+// MaxHistory: the largest history count of the model (the local array size);
+// nh <= MaxHistory columns are used.
+template <int MaxHistory, class Model>
+long update_metal_points(const Model& model, int nh, const SolidUpdateInput& in, const SolidUpdateOutput& out) {
+  return for_each_point(in.F_new.size(), [&](std::size_t i) {
+    double hist[MaxHistory];
+    for (int k = 0; k < nh; ++k) hist[k] = out.history[k][i];
+    typename Model::PointOut po;
+    if (!model.update_point(in.F_old[i], in.F_new[i], in.stress_old[i], in.temperature[i], in.dt, in.density0, hist,
+                            po))
+      return false;
+    for (int k = 0; k < nh; ++k) out.history[k][i] = hist[k];
+    out.stress[i] = po.r.stress;
+    out.wave_speed[i] = po.r.wave_speed;
+    out.energy_density[i] = po.r.energy_density;
+    out.plastic_work[i] = po.plastic_work;
+    out.heating[i] = po.heating;
+    return true;
+  });
+}
+
+}  // namespace tephra
