@@ -16,6 +16,7 @@ void make_axisymmetric_particles(const Vec3& h, double density, Particles& p) {
 long compute_axisymmetric_stencils(const Particles& p, const NodeGrid& g, Stencils& s) {
   const std::size_t np = p.size();
   s.width = 8;
+  s.axis_nodes = 0;  // the flat form
   s.node.resize(np * 8);
   s.w.resize(np * 8);
   s.grad.resize(np * 8);

@@ -77,8 +77,12 @@ void MpmComponent::initialize() {
 double MpmComponent::material_stable_timestep(const MpmMaterial& m) const {
   double dt = std::numeric_limits<double>::infinity();
   const Particles& p = m.particles;
-  for (std::size_t i = 0; i < p.size(); ++i)
-    for (int d = 0; d < 3; ++d) dt = std::min(dt, setup_.grid.dx[d] / (p.wave_speed[i] + std::abs(p.v[i][d])));
+  const long np = static_cast<long>(p.size());
+  const Vec3 dx = setup_.grid.dx;
+  // min is exact and independent of the order: the same value for any thread count.
+#pragma omp parallel for schedule(static) reduction(min : dt) if (np >= 4096)
+  for (long i = 0; i < np; ++i)
+    for (int d = 0; d < 3; ++d) dt = std::min(dt, dx[d] / (p.wave_speed[i] + std::abs(p.v[i][d])));
   return dt;
 }
 
@@ -103,8 +107,16 @@ void MpmComponent::fail_particle(const MpmMaterial& m, std::size_t i, int step, 
 // Stencils + P2G (Alg. 5) on a reset grid, with the grid BCs on v_g.
 void MpmComponent::interpolate_to_grid(MpmMaterial& m, int step, const char* phase) {
   PhaseTimers::Scope t(phase_timers(), "MPM: interpolate particles to grid");
-  const long bad = setup_.flags.axisymmetric ? compute_axisymmetric_stencils(m.particles, m.grid, m.stencils)
-                                             : compute_stencils(m.particles, m.grid, setup_.flags.interpolator, m.stencils);
+  // The per-axis stencil form (Interpolator.h) for linear, gimp and
+  // 3rdorderBS when every support is inside the grid, not axisymmetric and no
+  // contact model reads the stencils by entry index (friction_LR); else the
+  // flat form. Transfers, heat conduction and contact normals read either.
+  const bool axis_form = !setup_.flags.axisymmetric && !(setup_.contact && setup_.materials.size() > 1) &&
+                         compute_axis_stencils(m.particles, m.grid, setup_.flags.interpolator, m.stencils);
+  const long bad = axis_form ? -1
+                   : setup_.flags.axisymmetric
+                       ? compute_axisymmetric_stencils(m.particles, m.grid, m.stencils)
+                       : compute_stencils(m.particles, m.grid, setup_.flags.interpolator, m.stencils);
   if (bad >= 0) fail_particle(m, std::size_t(bad), step, phase, "particle is outside the grid");
   m.grid.reset();
   particles_to_grid(m.particles, m.stencils, setup_.gravity, m.grid);
@@ -130,14 +142,18 @@ void MpmComponent::internal_force(MpmMaterial& m) {
 void MpmComponent::update_stress(MpmMaterial& m, int step, double dt) {
   PhaseTimers::Scope t(phase_timers(), "MPM: compute stress tensor");
   Particles& p = m.particles;
-  for (std::size_t i = 0; i < p.size(); ++i) {
+  const long np = static_cast<long>(p.size());
+  long bad_J = np;  // the lowest particle with det F <= 0 (what the serial loop reports)
+#pragma omp parallel for schedule(static) reduction(min : bad_J) if (np >= 4096)
+  for (long i = 0; i < np; ++i) {
     const double J = p.F[i].determinant();
-    if (!(J > 0.0) || !std::isfinite(J)) {
-      std::ostringstream s;
-      s << "Jacobian det F = " << J << " (must be > 0)";
-      fail_particle(m, i, step, "compute deformation gradient", s.str());
-    }
-    p.volume[i] = J * p.volume0[i];
+    if (!(J > 0.0) || !std::isfinite(J)) bad_J = std::min(bad_J, i);
+    else p.volume[i] = J * p.volume0[i];
+  }
+  if (bad_J < np) {
+    std::ostringstream s;
+    s << "Jacobian det F = " << p.F[bad_J].determinant() << " (must be > 0)";
+    fail_particle(m, std::size_t(bad_J), step, "compute deformation gradient", s.str());
   }
   m.plastic_work.resize(p.size());
   m.heating.resize(p.size());
@@ -337,15 +353,21 @@ void MpmComponent::advance(double t, double dt, int step) {
     const bool musl = !setup_.prescribed;
     if (musl) {
       musl_velocity_.resize(mats.size());
+      const double cell_volume = setup_.grid.dx[0] * setup_.grid.dx[1] * setup_.grid.dx[2];
       for (std::size_t i = 0; i < mats.size(); ++i) {
         MpmMaterial& m = mats[i];
-        updated_particle_grid_velocity(m.particles, m.stencils, m.grid, dt,
-                                       periodic_.active() ? &periodic_.canonical : nullptr, musl_velocity_[i]);
+        if (!contact && !periodic_.active()) {
+          // Only the nodes keep_stable_usl_nodes keeps below (none: USL everywhere; same bits).
+          usl_needed_nodes(m.grid, usl_fill_limit(courant_number(m, dt)), cell_volume, musl_needed_);
+          updated_particle_grid_velocity_at(m.particles, m.stencils, m.grid, dt, musl_needed_, musl_velocity_[i]);
+        } else {
+          updated_particle_grid_velocity(m.particles, m.stencils, m.grid, dt,
+                                         periodic_.active() ? &periodic_.canonical : nullptr, musl_velocity_[i]);
+        }
         m.bcs.apply(m.grid, musl_velocity_[i]);
         std::swap(m.grid.velocity_star, musl_velocity_[i]);  // l_p and contact read g.velocity_star
       }
       if (contact) exchange_momentum(ContactStage::Integrated, t, dt);
-      const double cell_volume = setup_.grid.dx[0] * setup_.grid.dx[1] * setup_.grid.dx[2];
       for (std::size_t i = 0; i < mats.size(); ++i)  // v*_g back where USL is stable for the node
         keep_stable_usl_nodes(mats[i].grid, usl_fill_limit(courant_number(mats[i], dt)), cell_volume,
                               musl_velocity_[i], mats[i].grid.velocity_star);
@@ -385,14 +407,24 @@ void MpmComponent::advance(double t, double dt, int step) {
       grid_to_particles(m.stencils, m.grid, dt, p);
       wrap_periodic_positions(setup_.grid, p);  // re-enter through the opposite periodic face
       update_temperatures(m, dt);  // T += dt (sum rate_g S + model heating)
-      for (std::size_t i = 0; i < p.size(); ++i) {
-        if (!p.v[i].allFinite()) fail_particle(m, i, step, "interpolate to particles", "non-finite velocity");
+      // The lowest particle with a non-finite velocity or outside the grid (threads), then its message.
+      const NodeGrid& grid = m.grid;
+      auto fine = [&](std::size_t i) {
+        if (!p.v[i].allFinite()) return false;
         for (int d = 0; d < 3; ++d) {
-          const double xi = (p.x[i][d] - m.grid.origin[d]) / m.grid.h[d];
-          if (!(xi >= 0.0 && xi < m.grid.n[d] - 1))
-            fail_particle(m, i, step, "interpolate to particles", "particle left the grid");
+          const double xi = (p.x[i][d] - grid.origin[d]) / grid.h[d];
+          if (!(xi >= 0.0 && xi < grid.n[d] - 1)) return false;
         }
-      }
+        return true;
+      };
+      const long np = static_cast<long>(p.size());
+      long bad = np;
+#pragma omp parallel for schedule(static) reduction(min : bad) if (np >= 4096)
+      for (long i = 0; i < np; ++i)
+        if (!fine(std::size_t(i))) bad = std::min(bad, i);
+      if (bad < np)
+        fail_particle(m, std::size_t(bad), step, "interpolate to particles",
+                      p.v[bad].allFinite() ? "particle left the grid" : "non-finite velocity");
       delete_particles(m, v_old.empty() ? p.v : v_old, step);  // Vaango's limits (mpm/ParticleDeletion.h)
     }
   }

@@ -124,6 +124,7 @@ class MpmComponent final : public Component {
   // v_g of each material as P2G (and the grid BCs) left it, before the
   // interpolated contact; the step's a_g is taken against it (see advance()).
   std::vector<std::vector<Vec3>> p2g_velocity_;
+  std::vector<unsigned char> musl_needed_;  // scratch: nodes where step 9 keeps v_g^{n+1} (usl_needed_nodes)
   std::vector<std::vector<Vec3>> musl_velocity_;  // per material: v_g^{n+1} of the updated particle velocities (step 9)
   // BndyForce_<face> = -sum f_int over the face's nodes and all materials,
   // BndyContactArea_<face> = sum V_g / h_normal (Vaango's computeInternalForce),

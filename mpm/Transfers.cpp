@@ -1,5 +1,7 @@
 #include "mpm/Transfers.h"
 
+#include "mpm/shape/AxisStencils.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -91,38 +93,41 @@ ScatterScratch& scratch() {
   return s;
 }
 
-// P2G sums of particles [begin, end) into `a`.
-void p2g_range(const Particles& p, const Stencils& s, const Vec3& body_force, std::size_t begin,
-               std::size_t end, const NodeSums& a) {
-  const std::size_t W = s.width;
-  const std::size_t* node = s.node.data();
-  const double* w = s.w.data();
+// P2G sums of particles [begin, end) into `a` (V: a stencil view, AxisStencils.h).
+template <class V>
+void p2g_range(const Particles& p, const V& s, const Vec3& body_force, std::size_t begin, std::size_t end,
+               const NodeSums& a) {
   for (std::size_t i = begin; i < end; ++i) {
     const double mp = p.mass[i], vp = p.volume[i];
     const Vec3 momentum = mp * p.v[i];
     const Vec3 force = p.external_force[i] + mp * body_force;
     const Mat3 vol_stress = vp * p.stress[i];
-    for (std::size_t k = i * W; k < (i + 1) * W; ++k) {
-      const std::size_t gi = node[k];
-      const double wk = w[k];
+    s.weights(i, [&](std::size_t gi, double wk) {
       a.mass[gi] += mp * wk;
       a.volume[gi] += vp * wk;
       a.momentum[gi] += momentum * wk;
       a.external_force[gi] += force * wk;
       a.vol_stress[gi] += vol_stress * wk;
-    }
+    });
   }
 }
 
-void fint_range(const Particles& p, const Stencils& s, std::size_t begin, std::size_t end, Vec3* fint) {
-  const std::size_t W = s.width;
-  const std::size_t* node = s.node.data();
-  const Vec3* grad = s.grad.data();
+template <class V>
+void fint_range(const Particles& p, const V& s, std::size_t begin, std::size_t end, Vec3* fint) {
   for (std::size_t i = begin; i < end; ++i) {
     // sigma - q I: the artificial bulk viscosity acts in the force only.
     const Mat3 vol_stress = p.volume[i] * (p.stress[i] - p.q[i] * Mat3::Identity());
-    for (std::size_t k = i * W; k < (i + 1) * W; ++k) fint[node[k]] -= vol_stress * grad[k];
+    s.entries(i, [&](std::size_t gi, double, const Vec3& gr) { fint[gi] -= vol_stress * gr; });
   }
+}
+
+void p2g_range(const Particles& p, const Stencils& s, const Vec3& body_force, std::size_t begin,
+               std::size_t end, const NodeSums& a) {
+  visit_stencils(s, [&](const auto& v) { p2g_range(p, v, body_force, begin, end, a); });
+}
+
+void fint_range(const Particles& p, const Stencils& s, std::size_t begin, std::size_t end, Vec3* fint) {
+  visit_stencils(s, [&](const auto& v) { fint_range(p, v, begin, end, fint); });
 }
 
 }  // namespace
@@ -214,46 +219,43 @@ void acceleration_from_velocities(NodeGrid& g, double dt) {
 }
 
 void velocity_gradients(const Stencils& s, const NodeGrid& g, std::vector<Mat3>& L) {
-  const std::size_t W = s.width, np = s.particles();
+  const std::size_t np = s.particles();
   L.resize(np);
-  const std::size_t* node = s.node.data();
-  const Vec3* grad = s.grad.data();
   const Vec3* vstar = g.velocity_star.data();
+  visit_stencils(s, [&](const auto& view) {
 #pragma omp parallel for schedule(static) if (np >= kMinParallel)
-  for (std::size_t i = 0; i < np; ++i) {
-    // l(r,c) += v*_r dS/dx_c, written out in scalars (the Eigen expression
-    // built a temporary 3x3 per entry); the same products and sums in the same
-    // order, so the same bits.
-    double l[3][3] = {};
-    for (std::size_t k = i * W; k < (i + 1) * W; ++k) {
-      const Vec3& v = vstar[node[k]];
-      const Vec3& gr = grad[k];
+    for (std::size_t i = 0; i < np; ++i) {
+      // l(r,c) += v*_r dS/dx_c, written out in scalars (no 3x3 temporary per entry).
+      double l[3][3] = {};
+      view.entries(i, [&](std::size_t gi, double, const Vec3& gr) {
+        const Vec3& v = vstar[gi];
+        for (int r = 0; r < 3; ++r)
+          for (int c = 0; c < 3; ++c) l[r][c] += v[r] * gr[c];
+      });
+      Mat3& Li = L[i];
       for (int r = 0; r < 3; ++r)
-        for (int c = 0; c < 3; ++c) l[r][c] += v[r] * gr[c];
+        for (int c = 0; c < 3; ++c) Li(r, c) = l[r][c];
     }
-    Mat3& Li = L[i];
-    for (int r = 0; r < 3; ++r)
-      for (int c = 0; c < 3; ++c) Li(r, c) = l[r][c];
-  }
+  });
 }
 
 void grid_to_particles(const Stencils& s, const NodeGrid& g, double dt, Particles& p) {
-  const std::size_t W = s.width, np = s.particles();
-  const std::size_t* node = s.node.data();
-  const double* w = s.w.data();
+  const std::size_t np = s.particles();
   const Vec3* acc = g.acceleration.data();
   const Vec3* vstar = g.velocity_star.data();
+  visit_stencils(s, [&](const auto& view) {
 #pragma omp parallel for schedule(static) if (np >= kMinParallel)
-  for (std::size_t i = 0; i < np; ++i) {
-    Vec3 a = Vec3::Zero(), v = Vec3::Zero();
-    for (std::size_t k = i * W; k < (i + 1) * W; ++k) {
-      a += acc[node[k]] * w[k];
-      v += vstar[node[k]] * w[k];
+    for (std::size_t i = 0; i < np; ++i) {
+      Vec3 a = Vec3::Zero(), v = Vec3::Zero();
+      view.weights(i, [&](std::size_t gi, double wk) {
+        a += acc[gi] * wk;
+        v += vstar[gi] * wk;
+      });
+      p.v[i] += dt * a;
+      p.x[i] += dt * v;
+      p.displacement[i] += dt * v;
     }
-    p.v[i] += dt * a;
-    p.x[i] += dt * v;
-    p.displacement[i] += dt * v;
-  }
+  });
 }
 
 }  // namespace tephra

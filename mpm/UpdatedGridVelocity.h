@@ -41,6 +41,20 @@ namespace tephra {
 // which USL is unstable at Courant number C = dt (c + |v|) / h: from the
 // node's amplification matrix (omega^2 = c^2 / (h^2 phi), r = phi),
 // C^2 <= 4 phi / (2 - phi), i.e. phi >= 2 C^2 / (4 + C^2).
+// The nodes where keep_stable_usl_nodes (below) keeps v_g^{n+1}: needed[g] = 1
+// where phi_g < limit, and on the node planes within 2 extra of each face
+// (the grid BCs set an extra-cell node from its mirror across the face, which
+// then must hold v_g^{n+1} too). Returns the number of nodes with phi_g < limit.
+std::size_t usl_needed_nodes(const NodeGrid& g, double limit, double cell_volume, std::vector<unsigned char>& needed);
+
+// v_g^{n+1} as updated_particle_grid_velocity (no periodic aliases), exact at
+// the nodes with needed[g] != 0; the other nodes hold partial sums. Only the
+// particles whose stencil reaches a needed node are summed, in particle order,
+// so a needed node's sum has the same terms in the same order: the same bits.
+// With no needed node there is nothing to sum (USL everywhere).
+void updated_particle_grid_velocity_at(const Particles& p, const Stencils& s, const NodeGrid& g, double dt,
+                                       const std::vector<unsigned char>& needed, std::vector<Vec3>& out);
+
 inline double usl_fill_limit(double courant) { return 2.0 * courant * courant / (4.0 + courant * courant); }
 
 // Where phi_g >= limit, v_g = v*_g (Vaango's USL: a well-filled node is stable

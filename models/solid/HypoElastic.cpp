@@ -7,6 +7,7 @@
 
 #include "models/ModelParameters.h"
 #include "models/solid/Kinematics.h"
+#include "models/solid/PolarNewton.h"
 #include "models/solid/PointLoop.h"
 
 namespace tephra {
@@ -15,7 +16,8 @@ SolidPointResult hypo_elastic_point(const Eigen::Matrix3d& F_old, const Eigen::M
                                     const Eigen::Matrix3d& stress_old, double density0,
                                     const HypoElasticParams& p) {
   const Eigen::Matrix3d I = Eigen::Matrix3d::Identity();
-  const PolarDecomposition a = polar_decomposition(F_old), b = polar_decomposition(F_new);
+  // Newton polar decomposition (PolarNewton.h): the eigen-solve result to round-off, faster.
+  const PolarDecomposition a = polar_decomposition_newton(F_old), b = polar_decomposition_newton(F_new);
   // Unrotated strain increment: midpoint rule for d_hat = sym(U_dot U^{-1}).
   const Eigen::Matrix3d G = (b.U - a.U) * (0.5 * (a.U + b.U)).inverse();
   const Eigen::Matrix3d de = 0.5 * (G + G.transpose());

@@ -1,19 +1,23 @@
 #include "mpm/contact/ContactNormals.h"
 
+#include "mpm/shape/AxisStencils.h"
+
 namespace tephra {
 
 void mass_gradient(const Particles& p, const Stencils& s, const NodeGrid& g, std::vector<Vec3>& out) {
   out.assign(g.count(), Vec3::Zero());
-  const std::size_t W = std::size_t(s.width);
-  for (std::size_t i = 0; i < p.size(); ++i)
-    for (std::size_t e = i * W; e < (i + 1) * W; ++e) out[s.node[e]] += p.mass[i] * s.grad[e];
+  visit_stencils(s, [&](const auto& view) {
+    for (std::size_t i = 0; i < p.size(); ++i)
+      view.entries(i, [&](std::size_t gi, double, const Vec3& gr) { out[gi] += p.mass[i] * gr; });
+  });
 }
 
 void mass_weighted_position(const Particles& p, const Stencils& s, const NodeGrid& g, std::vector<Vec3>& out) {
   out.assign(g.count(), Vec3::Zero());
-  const std::size_t W = std::size_t(s.width);
-  for (std::size_t i = 0; i < p.size(); ++i)
-    for (std::size_t e = i * W; e < (i + 1) * W; ++e) out[s.node[e]] += p.mass[i] * s.w[e] * p.x[i];
+  visit_stencils(s, [&](const auto& view) {
+    for (std::size_t i = 0; i < p.size(); ++i)
+      view.weights(i, [&](std::size_t gi, double w) { out[gi] += p.mass[i] * w * p.x[i]; });
+  });
   for (std::size_t gi = 0; gi < g.count(); ++gi)
     if (g.mass[gi] > 0.0) out[gi] /= g.mass[gi];
 }

@@ -156,10 +156,71 @@ long fill(const Particles& p, const NodeGrid& g, const InterpolatorSpec& spec, S
   return bad < np ? bad : -1;
 }
 
+// The per-axis form of particle i (Interpolator.h); false when its support
+// leaves the grid. Same 1-D factors as fill_particle.
+template <InterpolatorKind K, int N>
+bool fill_axis_particle(const Particles& p, const NodeGrid& g, std::size_t i, Stencils& s) {
+  Vec3 xi;
+  for (int d = 0; d < 3; ++d) {
+    xi[d] = (p.x[i][d] - g.origin[d]) / g.h[d];
+    if (!(xi[d] >= 0.0 && xi[d] < g.n[d] - 1)) return false;
+  }
+  ShapeAxis ax[3];
+  for (int d = 0; d < 3; ++d) {
+    if constexpr (K == InterpolatorKind::Linear) ax[d] = linear_axis(xi[d]);
+    if constexpr (K == InterpolatorKind::Gimp) ax[d] = gimp_axis(xi[d], 0.5 * p.psize[i](d, d));
+    if constexpr (K == InterpolatorKind::QuadraticBspline) ax[d] = quadratic_bspline_axis(xi[d]);
+    if (ax[d].count != N || ax[d].first < 0 || ax[d].first + N > g.n[d]) return false;
+  }
+  s.base[i] = g.index(ax[0].first, ax[1].first, ax[2].first);
+  double* f = s.factors.data() + i * 6 * N;
+  for (int d = 0; d < 3; ++d)
+    for (int a = 0; a < N; ++a) {
+      f[d * N + a] = ax[d].S[a];
+      f[(3 + d) * N + a] = ax[d].dS[a] / g.h[d];
+    }
+  return true;
+}
+
+template <InterpolatorKind K, int N>
+bool fill_axis(const Particles& p, const NodeGrid& g, Stencils& s) {
+  const long np = static_cast<long>(p.size());
+  s.axis_nodes = N;
+  s.width = N * N * N;
+  s.stride_y = std::size_t(g.n[0]);
+  s.stride_z = std::size_t(g.n[0]) * std::size_t(g.n[1]);
+  s.base.resize(std::size_t(np));
+  s.factors.resize(std::size_t(np) * 6 * N);
+  bool ok = true;
+#pragma omp parallel for schedule(static) reduction(&& : ok) if (np >= 4096)
+  for (long i = 0; i < np; ++i) ok = fill_axis_particle<K, N>(p, g, std::size_t(i), s) && ok;
+  return ok;
+}
+
+template <class T>
+void release(std::vector<T>& v) {
+  std::vector<T>().swap(v);
+}
+
 }  // namespace
+
+bool compute_axis_stencils(const Particles& p, const NodeGrid& g, const InterpolatorSpec& spec, Stencils& s) {
+  release(s.node);
+  release(s.w);
+  release(s.grad);
+  switch (spec.kind) {
+    case InterpolatorKind::Linear: return fill_axis<InterpolatorKind::Linear, 2>(p, g, s);
+    case InterpolatorKind::Gimp: return fill_axis<InterpolatorKind::Gimp, 3>(p, g, s);
+    case InterpolatorKind::QuadraticBspline: return fill_axis<InterpolatorKind::QuadraticBspline, 3>(p, g, s);
+    default: s.axis_nodes = 0; return false;
+  }
+}
 
 long compute_stencils(const Particles& p, const NodeGrid& g, const InterpolatorSpec& spec, Stencils& s) {
   s.width = stencil_width(spec.kind);
+  s.axis_nodes = 0;
+  release(s.base);
+  release(s.factors);
   const std::size_t n = p.size() * std::size_t(s.width);
   s.node.resize(n);
   s.w.resize(n);

@@ -42,15 +42,38 @@ std::string interpolator_name(InterpolatorKind k);
 
 struct Stencils {
   int width = 8;
+  // Flat form (axis_nodes == 0): entry k of particle p at p W + k.
   std::vector<std::size_t> node;  // flat node index (NodeGrid::index)
   std::vector<double> w;          // S_gp
   std::vector<Vec3> grad;         // grad S_gp [1/m]
-  std::size_t particles() const { return width ? w.size() / width : 0; }
+  // Per-axis form of the tensor-product interpolators (axis_nodes = N > 0,
+  // node / w / grad empty; mpm/shape/AxisStencils.h forms the entries):
+  // particle p stores the flat index of its lowest support node and, per
+  // axis d, the N 1-D factors S_d[a] and G_d[a] = (dS_d/dxi)[a] / h_d, so
+  //   S_gp = S_x[a] S_y[b] S_z[c],
+  //   grad S_gp = (G_x[a] S_y[b] S_z[c], S_x[a] G_y[b] S_z[c], S_x[a] S_y[b] G_z[c]),
+  // node = base + a + stride_y b + stride_z c (x fastest, as the flat form).
+  int axis_nodes = 0;
+  std::size_t stride_y = 0, stride_z = 0;  // NodeGrid index steps in y and z
+  std::vector<std::size_t> base;           // per particle
+  std::vector<double> factors;             // per particle 6 N: S_x, S_y, S_z, G_x, G_y, G_z
+  std::size_t particles() const {
+    return axis_nodes ? base.size() : width ? w.size() / width : 0;
+  }
 };
 
 // Stencils of every particle of `p` on `g`. Returns the index of the first
 // particle whose support leaves the node grid (or whose CPDI domain is
 // degenerate), or -1 when all are fine.
 long compute_stencils(const Particles& p, const NodeGrid& g, const InterpolatorSpec& spec, Stencils& s);
+
+// The per-axis form (above) for linear, gimp and 3rdorderBS, when every
+// particle's support lies inside the node grid: returns true and fills `s`
+// (node / w / grad emptied). Returns false, `s` unspecified, for any other
+// interpolator or when some particle's support leaves the grid (the caller
+// then uses compute_stencils, which also names the failing particle). The
+// weights are the bits compute_stencils gives; the gradients differ by
+// round-off (1/h applied to the 1-D factor instead of the product).
+bool compute_axis_stencils(const Particles& p, const NodeGrid& g, const InterpolatorSpec& spec, Stencils& s);
 
 }  // namespace tephra

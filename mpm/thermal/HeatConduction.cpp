@@ -2,32 +2,37 @@
 
 #include <limits>
 
+#include "mpm/shape/AxisStencils.h"
+
 namespace tephra {
 
 void temperature_to_grid(const Particles& p, const Stencils& s, const NodeGrid& g, ThermalNodes& t) {
-  const std::size_t nn = g.count(), W = s.width;
+  const std::size_t nn = g.count();
   t.temperature.assign(nn, 0.0);
   t.rate.assign(nn, 0.0);
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    const double mT = p.mass[i] * p.temperature[i];
-    for (std::size_t k = i * W; k < (i + 1) * W; ++k) t.temperature[s.node[k]] += mT * s.w[k];
-  }
+  visit_stencils(s, [&](const auto& view) {
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      const double mT = p.mass[i] * p.temperature[i];
+      view.weights(i, [&](std::size_t gi, double w) { t.temperature[gi] += mT * w; });
+    }
+  });
   for (std::size_t gi = 0; gi < nn; ++gi)
     if (g.mass[gi] > 0.0) t.temperature[gi] /= g.mass[gi];
 }
 
 void add_conduction_rate(const Particles& p, const Stencils& s, const NodeGrid& g, double conductivity,
                          double specific_heat, ThermalNodes& t) {
-  const std::size_t W = s.width;
   // The heat flow into node g, Q_g = -sum_p k V_p grad S_gp . grad T_p [W],
   // gathered first and divided by the node's heat capacity m_g c_v after.
   std::vector<double> heat_flow(g.count(), 0.0);
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    Vec3 grad_T = Vec3::Zero();
-    for (std::size_t k = i * W; k < (i + 1) * W; ++k) grad_T += t.temperature[s.node[k]] * s.grad[k];
-    const Vec3 flux_volume = conductivity * p.volume[i] * grad_T;  // -q V_p, q = -k grad T
-    for (std::size_t k = i * W; k < (i + 1) * W; ++k) heat_flow[s.node[k]] -= s.grad[k].dot(flux_volume);
-  }
+  visit_stencils(s, [&](const auto& view) {
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      Vec3 grad_T = Vec3::Zero();
+      view.entries(i, [&](std::size_t gi, double, const Vec3& gr) { grad_T += t.temperature[gi] * gr; });
+      const Vec3 flux_volume = conductivity * p.volume[i] * grad_T;  // -q V_p, q = -k grad T
+      view.entries(i, [&](std::size_t gi, double, const Vec3& gr) { heat_flow[gi] -= gr.dot(flux_volume); });
+    }
+  });
   for (std::size_t gi = 0; gi < heat_flow.size(); ++gi)
     if (g.mass[gi] > 0.0) t.rate[gi] += heat_flow[gi] / (g.mass[gi] * specific_heat);
 }
@@ -51,12 +56,13 @@ void add_thermal_contact_rate(const std::vector<const NodeGrid*>& grids, const s
 }
 
 void temperature_rate_to_particles(const Stencils& s, const ThermalNodes& t, double dt, Particles& p) {
-  const std::size_t W = s.width;
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    double rate = 0.0;
-    for (std::size_t k = i * W; k < (i + 1) * W; ++k) rate += t.rate[s.node[k]] * s.w[k];
-    p.temperature[i] += dt * rate;
-  }
+  visit_stencils(s, [&](const auto& view) {
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      double rate = 0.0;
+      view.weights(i, [&](std::size_t gi, double w) { rate += t.rate[gi] * w; });
+      p.temperature[i] += dt * rate;
+    }
+  });
 }
 
 double conduction_stable_timestep(double diffusivity, const Vec3& h) {

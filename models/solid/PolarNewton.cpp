@@ -1,0 +1,34 @@
+#include "models/solid/PolarNewton.h"
+
+#include <cmath>
+
+#include <Eigen/LU>
+
+namespace tephra {
+
+PolarDecomposition polar_decomposition_newton(const Eigen::Matrix3d& F) {
+  Eigen::Matrix3d X = F;
+  bool scale = true;
+  for (int k = 0; k < 40; ++k) {
+    const double det = X.determinant();
+    if (!(std::abs(det) > 0.0) || !std::isfinite(det)) break;
+    // Scaling speeds up the first steps only; near convergence zeta -> 1.
+    const double zeta = scale ? std::cbrt(1.0 / std::abs(det)) : 1.0;
+    const Eigen::Matrix3d next = 0.5 * (zeta * X + (zeta * X).inverse().transpose());
+    const double change = (next - X).lpNorm<1>();  // sum |.|, ||X|| ~ 3 near convergence
+    X = next;
+    if (change < 1e-3) scale = false;
+    // Quadratic convergence: the error after this step is O(change^2),
+    // below round-off once change < 1e-9.
+    if (change < 1e-9) {
+      PolarDecomposition pd;
+      pd.R = X;
+      const Eigen::Matrix3d RtF = X.transpose() * F;
+      pd.U = 0.5 * (RtF + RtF.transpose());
+      return pd;
+    }
+  }
+  return polar_decomposition(F);
+}
+
+}  // namespace tephra
