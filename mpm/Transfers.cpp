@@ -224,18 +224,7 @@ void velocity_gradients(const Stencils& s, const NodeGrid& g, std::vector<Mat3>&
   const Vec3* vstar = g.velocity_star.data();
   visit_stencils(s, [&](const auto& view) {
 #pragma omp parallel for schedule(static) if (np >= kMinParallel)
-    for (std::size_t i = 0; i < np; ++i) {
-      // l(r,c) += v*_r dS/dx_c, written out in scalars (no 3x3 temporary per entry).
-      double l[3][3] = {};
-      view.entries(i, [&](std::size_t gi, double, const Vec3& gr) {
-        const Vec3& v = vstar[gi];
-        for (int r = 0; r < 3; ++r)
-          for (int c = 0; c < 3; ++c) l[r][c] += v[r] * gr[c];
-      });
-      Mat3& Li = L[i];
-      for (int r = 0; r < 3; ++r)
-        for (int c = 0; c < 3; ++c) Li(r, c) = l[r][c];
-    }
+    for (std::size_t i = 0; i < np; ++i) L[i] = particle_velocity_gradient(view, i, vstar);
   });
 }
 

@@ -13,7 +13,8 @@ PolarDecomposition polar_decomposition_newton(const Eigen::Matrix3d& F) {
     const double det = X.determinant();
     if (!(std::abs(det) > 0.0) || !std::isfinite(det)) break;
     // Scaling speeds up the first steps only; near convergence zeta -> 1.
-    const double zeta = scale ? std::cbrt(1.0 / std::abs(det)) : 1.0;
+    // zeta ~ 1 when |det X| ~ 1 (the mean stretch is 1): no cube root then.
+    const double zeta = scale && std::abs(std::abs(det) - 1.0) > 1e-3 ? std::cbrt(1.0 / std::abs(det)) : 1.0;
     const Eigen::Matrix3d next = 0.5 * (zeta * X + (zeta * X).inverse().transpose());
     const double change = (next - X).lpNorm<1>();  // sum |.|, ||X|| ~ 3 near convergence
     X = next;
