@@ -1,6 +1,7 @@
 #include "ice/IceAdvection.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <optional>
 #include <vector>
@@ -40,34 +41,38 @@ class Slopes {
         r.lo[d] = std::max(r.lo[d], 0);
         r.hi[d] = std::min(r.hi[d], g.cells[d]);
       }
+    if (r.empty()) return;
     T* s = s_;
+    const T* base = q.data();
+    // Strides of the neighbours along x, y, z in q's storage.
+    const IntVec3 c0 = r.lo;
+    const std::ptrdiff_t sx = 1, sy = std::ptrdiff_t(q.offset(c0[0], c0[1] + 1, c0[2]) - q.offset(c0[0], c0[1], c0[2])),
+                         sz = std::ptrdiff_t(q.offset(c0[0], c0[1], c0[2] + 1) - q.offset(c0[0], c0[1], c0[2]));
+    const std::ptrdiff_t stride[3] = {sx, sy, sz};
     for_each_cell(r, [&](int i, int j, int k) {
-      const IntVec3 D(i, j, k);
-      T* out = s + 3 * q.offset(i, j, k);
-      compute(q, D, out);
+      const std::size_t off = q.offset(i, j, k);
+      compute(base + off, stride, s + 3 * off);
     });
   }
-  const T* at(const IntVec3& D) const { return s_ + 3 * q_.offset(D[0], D[1], D[2]); }
+  const T* at_offset(std::size_t off) const { return s_ + 3 * off; }
 
  private:
-  static void compute(const GridArray<double>& q, const IntVec3& D, double* out) {
+  static void compute(const double* q, const std::ptrdiff_t* stride, double* out) {
     double qn[6];
     for (int k = 0; k < 3; ++k) {
-      const IntVec3 e = IntVec3::Unit(k);
-      qn[2 * k] = q(IntVec3(D - e));
-      qn[2 * k + 1] = q(IntVec3(D + e));
+      qn[2 * k] = q[-stride[k]];
+      qn[2 * k + 1] = q[stride[k]];
     }
-    limited_differences(qn, q(D), out);
+    limited_differences(qn, *q, out);
   }
-  static void compute(const GridArray<Vec3>& q, const IntVec3& D, Vec3* out) {
+  static void compute(const Vec3* q, const std::ptrdiff_t* stride, Vec3* out) {
     for (int c = 0; c < 3; ++c) {
       double qn[6], o[3];
       for (int k = 0; k < 3; ++k) {
-        const IntVec3 e = IntVec3::Unit(k);
-        qn[2 * k] = q(IntVec3(D - e))[c];
-        qn[2 * k + 1] = q(IntVec3(D + e))[c];
+        qn[2 * k] = q[-stride[k]][c];
+        qn[2 * k + 1] = q[stride[k]][c];
       }
-      limited_differences(qn, q(D)[c], o);
+      limited_differences(qn, (*q)[c], o);
       for (int d = 0; d < 3; ++d) out[d][c] = o[d];
     }
   }
@@ -93,18 +98,30 @@ class Slopes {
   T* s_ = nullptr;
 };
 
-// q on the donor's slab for the face normal to d with face-volume fraction
-// phi (signed: > 0 flows toward +d); slopes is null for first order.
+// Strides of a field's storage along x, y, z.
 template <class T>
-T slab_value(const Grid& g, AdvectionOrder order, const GridArray<T>& q, const Slopes<T>* slopes, int d,
-             const IntVec3& face, double phi) {
-  const IntVec3 e = IntVec3::Unit(d);
-  const IntVec3 D = phi > 0.0 ? IntVec3(face - e) : face;
-  if (order == AdvectionOrder::First) return q(D);
-  if (!g.periodic[d] && (D[d] < 0 || D[d] >= g.cells[d])) return q(D);  // extra cell: no slope (periodic: ghosts wrap)
-  const T dq = slopes->at(D)[d];
-  const double s = phi > 0.0 ? 1.0 : -1.0;
-  return q(D) + dq * (s * 0.5 * (1.0 - std::abs(phi)));
+std::array<std::ptrdiff_t, 3> strides_of(const GridArray<T>& q) {
+  const IntVec3 c = q.with_ghosts().lo;
+  const std::size_t o = q.offset(c[0], c[1], c[2]);
+  return {1, std::ptrdiff_t(q.offset(c[0], c[1] + 1, c[2]) - o), std::ptrdiff_t(q.offset(c[0], c[1], c[2] + 1) - o)};
+}
+
+// q on the donor's slab for the face (i,j,k) normal to d (the low face of
+// cell R = (i,j,k), at storage offset offR in q) with face-volume fraction
+// phi (signed: > 0 flows toward +d, donor L = R - e_d); slopes is null for
+// first order.
+template <class T>
+T slab_value(const Grid& g, const GridArray<T>& q, const Slopes<T>* slopes, int d, const IntVec3& face,
+             std::size_t offR, std::ptrdiff_t stride_d, double phi) {
+  const bool from_low = phi > 0.0;
+  const std::size_t offD = from_low ? offR - stride_d : offR;
+  const T& qD = q.data()[offD];
+  if (!slopes) return qD;
+  const int Dd = face[d] - (from_low ? 1 : 0);
+  if (!g.periodic[d] && (Dd < 0 || Dd >= g.cells[d])) return qD;  // extra cell: no slope (periodic: ghosts wrap)
+  const T dq = slopes->at_offset(offD)[d];
+  const double s = from_low ? 1.0 : -1.0;
+  return qD + dq * (s * 0.5 * (1.0 - std::abs(phi)));
 }
 
 }  // namespace
@@ -138,9 +155,13 @@ void density_fluxes(const Grid& g, AdvectionOrder order, const CellScalars& q, c
       const GridArray<double>& uf = u.at(d, pi);
       GridArray<double>& F = flux.at(d, pi);
       const double r = dt / g.dx[d];
+      const std::ptrdiff_t stride_d = strides_of(q[pi])[d];
+      const GridArray<double>& qp = q[pi];
+      const Slopes<double>* sl = slopes ? &*slopes : nullptr;
       for_each_cell(faces_of(g.patches[pi], d), [&](int i, int j, int k) {
         const double phi = uf(i, j, k) * r;
-        F(i, j, k) = phi == 0.0 ? 0.0 : phi * slab_value(g, order, q[pi], slopes ? &*slopes : nullptr, d, IntVec3(i, j, k), phi);
+        F(i, j, k) =
+            phi == 0.0 ? 0.0 : phi * slab_value(g, qp, sl, d, IntVec3(i, j, k), qp.offset(i, j, k), stride_d, phi);
       });
     }
   }
@@ -157,13 +178,17 @@ void specific_fluxes(const Grid& g, AdvectionOrder order, const PatchFields<Cell
       const GridArray<double>& mf = mass_flux.at(d, pi);
       GridArray<T>& F = flux.at(d, pi);
       const double r = dt / g.dx[d];
+      const std::ptrdiff_t stride_d = strides_of(psi[pi])[d];
+      const GridArray<T>& qp = psi[pi];
+      const Slopes<T>* sl = slopes ? &*slopes : nullptr;
       for_each_cell(faces_of(g.patches[pi], d), [&](int i, int j, int k) {
         const double phi = uf(i, j, k) * r;
+        const std::size_t offR = qp.offset(i, j, k);
         if (phi == 0.0) {
-          F(i, j, k) = T(psi[pi](i, j, k) * 0.0);
+          F(i, j, k) = T(qp.data()[offR] * 0.0);
           return;
         }
-        F(i, j, k) = mf(i, j, k) * slab_value(g, order, psi[pi], slopes ? &*slopes : nullptr, d, IntVec3(i, j, k), phi);
+        F(i, j, k) = mf(i, j, k) * slab_value(g, qp, sl, d, IntVec3(i, j, k), offR, stride_d, phi);
       });
     }
   }
