@@ -4,13 +4,30 @@
 
 namespace tephra {
 
+namespace {
+
+// Per-thread work arrays (the equilibration runs once per (j, k) row of
+// cells, possibly on several threads): no allocation per call once warm.
+struct EquilibrationScratch {
+  std::vector<EosState> states;        // nm x n, material-major, of the active cells
+  std::vector<double> rho, temp;       // nm x n: gathered inputs of the active cells
+  std::vector<double> press;           // n: pressures of the active cells
+  std::vector<std::size_t> active;     // the cells still iterating, ascending
+  std::vector<char> done;              // per active cell: converged in this iteration
+};
+
+}  // namespace
+
 EquilibrationResult equilibrate_pressure(std::vector<EquilibrationMaterial>& mats, std::span<double> press,
                                          int max_iterations, double tol) {
   const std::size_t n = press.size();
+  const std::size_t nm = mats.size();
+  thread_local EquilibrationScratch s;
   EquilibrationResult result;
-  std::vector<EosState> st(n);
-  if (mats.size() == 1) {
+  if (s.states.size() < n * nm) s.states.resize(n * nm);
+  if (nm == 1) {
     EquilibrationMaterial& m = mats[0];
+    const std::span<EosState> st(s.states.data(), n);
     m.eos->evaluate(m.rho_micro, m.temp, st);
     for (std::size_t i = 0; i < n; ++i) {
       press[i] = st[i].p;
@@ -20,23 +37,50 @@ EquilibrationResult equilibrate_pressure(std::vector<EquilibrationMaterial>& mat
     return result;
   }
 
-  const std::size_t nm = mats.size();
-  std::vector<std::vector<EosState>> states(nm, std::vector<EosState>(n));
-  std::vector<char> done(n, 0);
+  if (s.rho.size() < n * nm) {
+    s.rho.resize(n * nm);
+    s.temp.resize(n * nm);
+  }
+  if (s.press.size() < n) {
+    s.press.resize(n);
+    s.done.resize(n);
+  }
   for (EquilibrationMaterial& m : mats)
     for (std::size_t i = 0; i < n; ++i) m.vol_frac[i] = m.rho_CC[i] / m.rho_micro[i];
 
-  std::size_t remaining = n;
+  // Only the cells still iterating are evaluated (gathered into contiguous
+  // arrays when some have converged): a converged cell's p, rho_m and theta_m
+  // are final, and re-evaluating it (as an all-cells loop would) gives the
+  // same values, so the result does not depend on the batching.
+  s.active.resize(n);
+  for (std::size_t i = 0; i < n; ++i) s.active[i] = i;
   int it = 0;
-  for (; it < max_iterations && remaining > 0; ++it) {
-    for (std::size_t k = 0; k < nm; ++k) mats[k].eos->evaluate(mats[k].rho_micro, mats[k].temp, states[k]);
-    for (std::size_t i = 0; i < n; ++i) {
-      if (done[i]) continue;
+  for (; it < max_iterations && !s.active.empty(); ++it) {
+    const std::size_t na = s.active.size();
+    const bool all = na == n;  // the active cells are 0..n-1: no gather
+    for (std::size_t k = 0; k < nm; ++k) {
+      const EquilibrationMaterial& m = mats[k];
+      const std::span<EosState> st(s.states.data() + k * n, na);
+      if (all) {
+        m.eos->evaluate(m.rho_micro, m.temp, st);
+        continue;
+      }
+      double* r = s.rho.data() + k * n;
+      double* T = s.temp.data() + k * n;
+      for (std::size_t a = 0; a < na; ++a) {
+        r[a] = m.rho_micro[s.active[a]];
+        T[a] = m.temp[s.active[a]];
+      }
+      m.eos->evaluate({r, na}, {T, na}, st);
+    }
+    for (std::size_t a = 0; a < na; ++a) {
+      const std::size_t i = s.active[a];
       double A = 0, B = 0, C = 0;
       for (std::size_t k = 0; k < nm; ++k) {
+        const EosState& st = s.states[k * n + a];
         const double theta = mats[k].vol_frac[i];
-        const double Q = press[i] - states[k][i].p;
-        const double inv_y = theta * theta / (states[k][i].dp_drho * mats[k].rho_CC[i]);
+        const double Q = press[i] - st.p;
+        const double inv_y = theta * theta / (st.dp_drho * mats[k].rho_CC[i]);
         A += theta;
         B += Q * inv_y;
         C += inv_y;
@@ -44,30 +88,41 @@ EquilibrationResult equilibrate_pressure(std::vector<EquilibrationMaterial>& mat
       double dp = (A - 1.0 - B) / C;
       if (!(press[i] + dp > 0.0)) dp = -0.5 * press[i];
       press[i] += dp;
+      s.press[a] = press[i];
       // Convergence is judged on the step just taken; theta is refreshed below.
-      if (std::abs(dp) <= tol * press[i] && std::abs(A - 1.0) <= tol) {
-        done[i] = 1;
-        --remaining;
-      }
+      s.done[a] = std::abs(dp) <= tol * press[i] && std::abs(A - 1.0) <= tol;
     }
     for (std::size_t k = 0; k < nm; ++k) {
       EquilibrationMaterial& m = mats[k];
-      m.eos->density(press, m.temp, m.rho_micro);
-      for (std::size_t i = 0; i < n; ++i) m.vol_frac[i] = m.rho_CC[i] / m.rho_micro[i];
+      if (all) {
+        m.eos->density(press, m.temp, m.rho_micro);
+        for (std::size_t i = 0; i < n; ++i) m.vol_frac[i] = m.rho_CC[i] / m.rho_micro[i];
+        continue;
+      }
+      double* r = s.rho.data() + k * n;
+      double* T = s.temp.data() + k * n;
+      for (std::size_t a = 0; a < na; ++a) T[a] = m.temp[s.active[a]];
+      m.eos->density({s.press.data(), na}, {T, na}, {r, na});
+      for (std::size_t a = 0; a < na; ++a) {
+        const std::size_t i = s.active[a];
+        m.rho_micro[i] = r[a];
+        m.vol_frac[i] = m.rho_CC[i] / r[a];
+      }
     }
+    std::size_t kept = 0;
+    for (std::size_t a = 0; a < na; ++a)
+      if (!s.done[a]) s.active[kept++] = s.active[a];
+    s.active.resize(kept);
   }
   result.iterations = it;
-  if (remaining > 0) {
+  if (!s.active.empty()) {
     result.converged = false;
-    for (std::size_t i = 0; i < n; ++i)
-      if (!done[i]) {
-        result.failed_cell = static_cast<long long>(i);
-        break;
-      }
+    result.failed_cell = static_cast<long long>(s.active[0]);
   }
   for (std::size_t k = 0; k < nm; ++k) {
-    mats[k].eos->evaluate(mats[k].rho_micro, mats[k].temp, states[k]);
-    for (std::size_t i = 0; i < n; ++i) mats[k].c2[i] = states[k][i].c2;
+    const std::span<EosState> st(s.states.data() + k * n, n);
+    mats[k].eos->evaluate(mats[k].rho_micro, mats[k].temp, st);
+    for (std::size_t i = 0; i < n; ++i) mats[k].c2[i] = st[i].c2;
   }
   return result;
 }

@@ -1,57 +1,70 @@
 #include "ice/Exchange.h"
 
-#include <Eigen/Dense>
 #include <cassert>
 
 namespace tephra {
 
 namespace {
 
-using SmallMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kMaxExchangeMaterials,
-                                  kMaxExchangeMaterials>;
-using SmallVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kMaxExchangeMaterials, 1>;
-
-SmallMatrix exchange_matrix(double dt, std::span<const double> theta, std::span<const double> sp_vol,
-                            std::span<const double> scale, std::span<const double> coeff) {
+// a = I + diag(sum_k beta_mk) - beta (row-major, n x n), beta_mk as in Exchange.h.
+void exchange_matrix(double dt, std::span<const double> theta, std::span<const double> sp_vol,
+                     std::span<const double> scale, std::span<const double> coeff, double* a) {
   const int n = static_cast<int>(theta.size());
   assert(n <= kMaxExchangeMaterials);
-  SmallMatrix a(n, n);
   for (int m = 0; m < n; ++m) {
-    a(m, m) = 1.0;
+    double diag = 1.0;
     for (int k = 0; k < n; ++k) {
       if (k == m) continue;
       const double beta = dt * theta[k] * coeff[m * n + k] * sp_vol[m] * (scale.empty() ? 1.0 : scale[m]);
-      a(m, k) = -beta;
-      a(m, m) += beta;
+      a[m * n + k] = -beta;
+      diag += beta;
+    }
+    a[m * n + m] = diag;
+  }
+}
+
+// Gaussian elimination without pivoting on the n x n system a x = b for
+// nrhs right-hand sides (overwritten with the solutions). The exchange matrix
+// is strictly diagonally dominant by rows (a_mm = 1 + sum_k |a_mk| for
+// non-negative coefficients, volume fractions and specific volumes), a
+// property elimination keeps, so no pivot is needed and none is small
+// (Golub & Van Loan, Matrix Computations, sec. 3.4.10).
+void solve_dominant(int n, double* a, std::span<double>* b, int nrhs) {
+  for (int p = 0; p < n; ++p) {
+    const double inv = 1.0 / a[p * n + p];
+    for (int r = p + 1; r < n; ++r) {
+      const double f = a[r * n + p] * inv;
+      if (f == 0.0) continue;
+      for (int c = p + 1; c < n; ++c) a[r * n + c] -= f * a[p * n + c];
+      for (int q = 0; q < nrhs; ++q) b[q][r] -= f * b[q][p];
     }
   }
-  return a;
+  for (int p = n - 1; p >= 0; --p) {
+    const double inv = 1.0 / a[p * n + p];
+    for (int q = 0; q < nrhs; ++q) {
+      double s = b[q][p];
+      for (int c = p + 1; c < n; ++c) s -= a[p * n + c] * b[q][c];
+      b[q][p] = s * inv;
+    }
+  }
 }
 
 }  // namespace
 
 void solve_exchange(double dt, std::span<const double> theta, std::span<const double> sp_vol,
                     std::span<const double> scale, std::span<const double> coeff, std::span<double> x) {
-  const int n = static_cast<int>(theta.size());
-  const SmallMatrix a = exchange_matrix(dt, theta, sp_vol, scale, coeff);
-  SmallVector b(n);
-  for (int m = 0; m < n; ++m) b[m] = x[m];
-  const SmallVector r = a.partialPivLu().solve(b);
-  for (int m = 0; m < n; ++m) x[m] = r[m];
+  double a[kMaxExchangeMaterials * kMaxExchangeMaterials];
+  exchange_matrix(dt, theta, sp_vol, scale, coeff, a);
+  solve_dominant(static_cast<int>(theta.size()), a, &x, 1);
 }
 
 void solve_exchange3(double dt, std::span<const double> theta, std::span<const double> sp_vol,
                      std::span<const double> coeff, std::span<double> ux, std::span<double> uy,
                      std::span<double> uz) {
-  const int n = static_cast<int>(theta.size());
-  const SmallMatrix a = exchange_matrix(dt, theta, sp_vol, {}, coeff);
-  const Eigen::PartialPivLU<SmallMatrix> lu(a);
-  for (std::span<double> x : {ux, uy, uz}) {
-    SmallVector b(n);
-    for (int m = 0; m < n; ++m) b[m] = x[m];
-    const SmallVector r = lu.solve(b);
-    for (int m = 0; m < n; ++m) x[m] = r[m];
-  }
+  double a[kMaxExchangeMaterials * kMaxExchangeMaterials];
+  exchange_matrix(dt, theta, sp_vol, {}, coeff, a);
+  std::span<double> b[3] = {ux, uy, uz};
+  solve_dominant(static_cast<int>(theta.size()), a, b, 3);
 }
 
 }  // namespace tephra

@@ -12,8 +12,9 @@
 // dt V theta_m theta_n C_mn (x_n - x_m) is antisymmetric in (m, n): total
 // momentum sum M_m u_m and energy sum M_m cv_m T_m are conserved.
 //
-// The N x N system (I + diag(sum_n beta_mn) - beta) x^new = x is solved by LU
-// per call; N <= kMaxExchangeMaterials.
+// The N x N system (I + diag(sum_n beta_mn) - beta) x^new = x is solved per
+// call by Gaussian elimination without pivoting (the matrix is strictly
+// diagonally dominant by rows); N <= kMaxExchangeMaterials.
 #include <span>
 
 namespace tephra {

@@ -97,6 +97,8 @@ class IceComponent final : public Component {
   // the velocity/temperature with the wall-mirrored extra cells they use.
   CellVectors visc_force_, vel_bc_;
   CellScalars heat_, temp_bc_;
+  std::vector<std::vector<double>> beta_;  // thermal expansivity per material (scratch of step 7-9, whole patch storage)
+  std::vector<char> diffusion_zero_;  // per patch: visc_force_ and heat_ hold zeros
   // Implicit pressure: the solver, the matrix, the residual and the correction.
   std::unique_ptr<PressureSolver> pressure_solver_;
   StencilCoefficients stencil_;

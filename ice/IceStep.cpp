@@ -20,6 +20,18 @@ namespace {
 
 IndexRange faces_of(const Patch& p, int d) { return {p.lo, p.hi + IntVec3::Unit(d)}; }
 
+// kernel(j, k) once per (j, k) row of r, the kernel looping over
+// i in [r.lo[0], r.hi[0]) itself (a row is contiguous in every cell field),
+// for kernels that hand whole rows to batched EOS calls. Rows are shared
+// among threads as for_each_cell (core/grid/Loop.h) shares its (k, j) pairs.
+template <class Kernel>
+void for_each_row(const IndexRange& r, Kernel&& kernel) {
+  const int k0 = r.lo[2], k1 = r.hi[2], j0 = r.lo[1], j1 = r.hi[1];
+#pragma omp parallel for collapse(2) schedule(static) if (r.size() >= kMinCellsPerParallelLoop)
+  for (int k = k0; k < k1; ++k)
+    for (int j = j0; j < j1; ++j) kernel(j, k);
+}
+
 }  // namespace
 
 // Step 1 (eq. 24.7): p_eq, theta_m, rho_micro_m, c_m in every cell including
@@ -28,39 +40,54 @@ void IceComponent::compute_equilibration_pressure(int step) {
   const Grid& g = setup_.grid;
   const std::size_t nm = mats_.size();
   for (std::size_t pi = 0; pi < g.patches.size(); ++pi) {
-    std::vector<IntVec3> cells;
-    for_each_cell_serial(g.patches[pi].cells_with_extra(), [&](int i, int j, int k) { cells.emplace_back(i, j, k); });
-    const std::size_t n = cells.size();
-    std::vector<double> press(n);
-    std::vector<std::vector<double>> rho(nm, std::vector<double>(n)), temp(nm, std::vector<double>(n)),
-        rho_micro(nm, std::vector<double>(n)), theta(nm, std::vector<double>(n)), c2(nm, std::vector<double>(n));
-    for (std::size_t c = 0; c < n; ++c) press[c] = press_CC_[pi](cells[c]);
-    std::vector<EquilibrationMaterial> em(nm);
-    for (std::size_t m = 0; m < nm; ++m) {
-      for (std::size_t c = 0; c < n; ++c) {
-        rho[m][c] = mats_[m].rho_CC[pi](cells[c]);
-        temp[m][c] = mats_[m].temp_CC[pi](cells[c]);
-        rho_micro[m][c] = 1.0 / mats_[m].sp_vol_CC[pi](cells[c]);
-      }
-      em[m] = {setup_.materials[m].eos.get(), rho[m], temp[m], rho_micro[m], theta[m], c2[m]};
-    }
-    const EquilibrationResult r = equilibrate_pressure(em, press, setup_.max_iter_equilibration);
-    if (!r.converged) {
-      const IntVec3& c = cells[static_cast<std::size_t>(r.failed_cell)];
-      std::ostringstream os;
-      os << "ICE equilibration pressure did not converge in " << setup_.max_iter_equilibration
-         << " iterations at step " << step << " in cell (" << c[0] << "," << c[1] << "," << c[2] << ")";
-      throw NumericalFailure(os.str());
-    }
-    for (std::size_t c = 0; c < n; ++c) {
-      press_equil_CC_[pi](cells[c]) = press[c];
+    // One (j, k) row of cells at a time, in place: every cell field of the
+    // patch has the same layout, so a row is a contiguous span of each and
+    // the EOS is called once per material and row (no per-cell dispatch).
+    const IndexRange box = g.patches[pi].cells_with_extra();
+    const int i0 = box.lo[0];
+    const std::size_t n = static_cast<std::size_t>(box.hi[0] - i0);
+    std::vector<long long> failed(static_cast<std::size_t>(box.extent()[1]) * box.extent()[2], -1);
+    for_each_row(box, [&](int j, int k) {
+      thread_local std::vector<double> c2;
+      thread_local std::vector<EquilibrationMaterial> em;
+      if (c2.size() < nm * n) c2.resize(nm * n);
+      em.resize(nm);
+      double* press = &press_equil_CC_[pi](i0, j, k);
+      const double* p_guess = &press_CC_[pi](i0, j, k);
+      for (std::size_t c = 0; c < n; ++c) press[c] = p_guess[c];
       for (std::size_t m = 0; m < nm; ++m) {
         IceMaterialFields& f = mats_[m];
-        f.rho_micro_CC[pi](cells[c]) = rho_micro[m][c];
-        f.sp_vol_CC[pi](cells[c]) = 1.0 / rho_micro[m][c];
-        f.vol_frac_CC[pi](cells[c]) = theta[m][c];
-        f.speedSound_CC[pi](cells[c]) = std::sqrt(c2[m][c]);
+        double* rho_micro = &f.rho_micro_CC[pi](i0, j, k);
+        const double* sp_vol = &f.sp_vol_CC[pi](i0, j, k);
+        for (std::size_t c = 0; c < n; ++c) rho_micro[c] = 1.0 / sp_vol[c];
+        em[m] = {setup_.materials[m].eos.get(), {&f.rho_CC[pi](i0, j, k), n}, {&f.temp_CC[pi](i0, j, k), n},
+                 {rho_micro, n}, {&f.vol_frac_CC[pi](i0, j, k), n}, {c2.data() + m * n, n}};
       }
+      const EquilibrationResult r = equilibrate_pressure(em, {press, n}, setup_.max_iter_equilibration);
+      if (!r.converged) {
+        failed[static_cast<std::size_t>(k - box.lo[2]) * box.extent()[1] + (j - box.lo[1])] = i0 + r.failed_cell;
+        return;
+      }
+      for (std::size_t m = 0; m < nm; ++m) {
+        IceMaterialFields& f = mats_[m];
+        const double* rho_micro = &f.rho_micro_CC[pi](i0, j, k);
+        double* sp_vol = &f.sp_vol_CC[pi](i0, j, k);
+        double* ss = &f.speedSound_CC[pi](i0, j, k);
+        const double* c2m = c2.data() + m * n;
+        for (std::size_t c = 0; c < n; ++c) {
+          sp_vol[c] = 1.0 / rho_micro[c];
+          ss[c] = std::sqrt(c2m[c]);
+        }
+      }
+    });
+    for (std::size_t row = 0; row < failed.size(); ++row) {
+      if (failed[row] < 0) continue;
+      const long long jr = static_cast<long long>(row) % box.extent()[1], kr = static_cast<long long>(row) / box.extent()[1];
+      std::ostringstream os;
+      os << "ICE equilibration pressure did not converge in " << setup_.max_iter_equilibration
+         << " iterations at step " << step << " in cell (" << failed[row] << "," << box.lo[1] + jr << ","
+         << box.lo[2] + kr << ")";
+      throw NumericalFailure(os.str());
     }
     for (int face = 0; face < 6; ++face)
       apply_scalar_bc(g, g.patches[pi], static_cast<GridFace>(face), setup_.bcs[0][face][kBcPressure],
@@ -303,15 +330,32 @@ void IceComponent::lagrangian_values_and_exchange(double dt) {
       });
     }
     // Specific volume (eq. 26.13). beta from the EOS, one call per material.
-    std::vector<std::vector<double>> beta_tdot(nm);
-    for (std::size_t m = 0; m < nm; ++m) {
-      const IceMaterialFields& f = mats_[m];
-      std::vector<double> beta(f.rho_micro_CC[pi].size());
-      setup_.materials[m].eos->thermal_expansivity({f.rho_micro_CC[pi].data(), beta.size()},
-                                                   {f.temp_CC[pi].data(), beta.size()}, beta);
-      beta_tdot[m] = std::move(beta);
-    }
-    for_each_cell(patch.cells(), [&](int i, int j, int k) {
+    // One material: f_theta = theta kappa / theta kappa = 1 exactly, so the
+    // thermal term therm - f_theta therm is exactly 0 and beta is not needed.
+    if (beta_.size() < nm) beta_.resize(nm);
+    if (nm > 1)
+      for (std::size_t m = 0; m < nm; ++m) {
+        const IceMaterialFields& f = mats_[m];
+        const std::size_t size = f.rho_micro_CC[pi].size();
+        beta_[m].resize(size);
+        setup_.materials[m].eos->thermal_expansivity({f.rho_micro_CC[pi].data(), size}, {f.temp_CC[pi].data(), size},
+                                                     beta_[m]);
+      }
+    const std::vector<std::vector<double>>& beta_tdot = beta_;
+    if (nm == 1) {
+      IceMaterialFields& f = mats_[0];
+      const double tiny_v = setup_.materials[0].tiny_rho * setup_.materials[0].sources[0].density * V;
+      for_each_cell(patch.cells(), [&](int i, int j, int k) {
+        const IntVec3 c(i, j, k);
+        const double ss = f.speedSound_CC[pi](c);
+        const double theta_kappa = f.vol_frac_CC[pi](c) * f.sp_vol_CC[pi](c) / (ss * ss);
+        const double mass = f.rho_CC[pi](c) * V;
+        double sp_vol_L = mass * f.sp_vol_CC[pi](c) - V * theta_kappa * delP_Dilatate_[pi](c);
+        if (model_src_) sp_vol_L += model_src_->sp_vol[0][pi](c);
+        if (setup_.clamp_sp_vol) sp_vol_L = std::max(sp_vol_L, tiny_v * f.sp_vol_CC[pi](c));
+        spv_L_[0][pi](c) = sp_vol_L / mass_L_[0][pi](c);
+      });
+    } else for_each_cell(patch.cells(), [&](int i, int j, int k) {
       const IntVec3 c(i, j, k);
       const std::size_t off = press_CC_[pi].offset(i, j, k);
       double sum_theta_kappa = 0, sum_therm = 0;
@@ -398,8 +442,14 @@ void IceComponent::compute_diffusion_sources(std::size_t m, std::size_t pi) {
   const Patch& patch = g.patches[pi];
   const IceMaterialSpec& spec = setup_.materials[m];
   const IceMaterialFields& f = mats_[m];
+  // Inviscid, non-conducting material: the zeros of the last call stand
+  // (no refill of two whole fields per material and step).
+  if (diffusion_zero_.size() != g.patches.size()) diffusion_zero_.assign(g.patches.size(), 0);
+  const bool none = spec.dynamic_viscosity == 0.0 && spec.thermal_conductivity == 0.0;
+  if (none && diffusion_zero_[pi]) return;
   visc_force_[pi].fill(Vec3::Zero());
   heat_[pi].fill(0.0);
+  diffusion_zero_[pi] = none;
   if (spec.dynamic_viscosity != 0.0) {
     vel_bc_[pi] = f.vel_CC[pi];
     for (int face = 0; face < 6; ++face) {

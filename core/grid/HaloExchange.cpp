@@ -56,14 +56,27 @@ void exchange_impl(const Grid& g, PatchFields<FieldT>& pf, bool nodes) {
     FieldT& f = pf[n];
     const IndexRange own = f.with_extra();
     // Each thread writes ghosts of f only and reads entries that patches own,
-    // which no thread writes: no races.
-    for_each_cell(f.with_ghosts(), [&](int i, int j, int k) {
-      const IntVec3 c(i, j, k);
-      if (own.contains(c)) return;
-      IntVec3 s;
-      if (!owner_index(g, c, nodes, s)) return;
-      const int q = owner_patch(g, s);
-      f(c) = pf[size_t(q)](s);
+    // which no thread writes: no races. Only the shell outside with_extra()
+    // is visited: one task per (j, k) row, and a row that crosses the owned
+    // box skips its owned run of i (O(surface) work instead of O(volume)).
+    const IndexRange all = f.with_ghosts();
+    const IndexRange rows{all.lo, IntVec3(all.lo[0] + 1, all.hi[1], all.hi[2])};
+    for_each_cell(rows, [&](int, int j, int k) {
+      auto fill = [&](int i0, int i1) {
+        for (int i = i0; i < i1; ++i) {
+          const IntVec3 c(i, j, k);
+          IntVec3 s;
+          if (!owner_index(g, c, nodes, s)) continue;
+          const int q = owner_patch(g, s);
+          f(c) = pf[size_t(q)](s);
+        }
+      };
+      if (j >= own.lo[1] && j < own.hi[1] && k >= own.lo[2] && k < own.hi[2]) {
+        fill(all.lo[0], std::max(all.lo[0], own.lo[0]));
+        fill(std::min(all.hi[0], own.hi[0]), all.hi[0]);
+      } else {
+        fill(all.lo[0], all.hi[0]);
+      }
     });
   }
 }

@@ -3,6 +3,7 @@
 // (JWL.cc, JWLC.cc); derivatives re-derived here.
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <utility>
 
 #include "models/eos/DensitySolve.h"
@@ -46,7 +47,42 @@ struct Jwlc {
     const double P3 = C * std::pow(rho / rho0, 1.0 + om);
     return {P1 + P2 + P3, (R1 * V * P1 + R2 * V * P2 + (1.0 + om) * P3) / rho, 0.0};
   }
+  // rho(p): Newton on g(x) = ln p(rho0 e^x) - ln p_target in x = ln(rho/rho0),
+  //   g'(x) = rho (dp/drho) / p,
+  // from x0 = ln(p_target/C)/(1 + om), where the C term alone gives p_target
+  // (exact when the exponentials are negligible, rho << rho0: one step). In
+  // these variables the C term is linear and the exponential terms are
+  // smooth and concave, so Newton converges in a few steps over the whole
+  // range (the plain bracketed Newton on rho from [0, rho0] needs 10-40
+  // evaluations at the low pressures of an absent product). Safeguard: the
+  // bracket [lo, hi] of the iterates with g < 0 and g > 0; a step leaving it
+  // (or a non-finite one) is a bisection once both ends are known, and with
+  // A, B >= 0 x0 is an upper end (p(x0) >= C e^{(1+om) x0} = p_target).
+  // Stops when |dx| <= 1e-10 (then the next Newton correction, ~ dx^2, is
+  // below round-off). Anything unusual (p <= 0, C <= 0, no convergence in
+  // 60 steps) falls back to the bracketed solve of DensitySolve.h.
   double density(double p, double T) const {
+    if (p > 0.0 && C > 0.0 && std::isfinite(p)) {
+      const double lnp = std::log(p);
+      double x = (lnp - std::log(C)) / (1.0 + om);
+      double lo = -std::numeric_limits<double>::infinity(), hi = std::numeric_limits<double>::infinity();
+      for (int it = 0; it < 60; ++it) {
+        const double rho = rho0 * std::exp(x);
+        const PointThermo t = point(rho, T);
+        const double g = std::log(t.p) - lnp;
+        if (g == 0.0) return rho;
+        if (g > 0.0) hi = std::min(hi, x);
+        else lo = std::max(lo, x);
+        double xn = x - g * t.p / (rho * t.dp_drho);
+        if (!(std::isfinite(xn) && xn > lo && xn < hi)) {
+          if (!(std::isfinite(lo) && std::isfinite(hi))) break;
+          xn = 0.5 * (lo + hi);
+        }
+        const double dx = xn - x;
+        x = xn;
+        if (std::abs(dx) <= 1e-10) return rho0 * std::exp(x);
+      }
+    }
     return solve_density_bracketed(
         [&](double r) {
           const PointThermo t = point(r, T);
