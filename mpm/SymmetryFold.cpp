@@ -48,8 +48,7 @@ double reflect(double s, int) { return s; }
 template <class T>
 void fold_field(const NodeGrid& g, int f, std::vector<T>& q) {
   for_pairs(g, f, [&](std::size_t e, std::size_t m, int d) {
-    q[m] += reflect(q[e], d);
-    q[e] = reflect(q[m], d);
+    q[m] += reflect(q[e], d);  // the extra node keeps its own sums (the BCs set its velocity)
   });
 }
 

@@ -13,12 +13,14 @@
 // + O(h) per unit area, i.e. the wall's reaction on node g, an O(1) relative
 // error that does not fall with h (docs/mpm-convergence.md, the gimp and
 // 3rdorderBS stall on AxisAligned). Folding adds the extra node's sums,
-// reflected, to its mirror node, and leaves the extra node the reflection of
-// the mirror's total, which is the grid of the mirrored (symmetric) problem:
+// reflected, to its mirror node:
 //   m_g += m_e,  (m v)_g += R (m v)_e,  f_g += R f_e,  V_g += V_e,
-//   (V sigma)_g += R (V sigma)_e R;   then  q_e = R q_g  (each field).
-// Applied face by face (x, y, z), which composes the images of edges and
-// corners (R_x R_y, ...). The face node is its own mirror (its sums double,
+//   (V sigma)_g += R (V sigma)_e R.
+// The extra node keeps its own sums (its velocities are then set from the
+// mirror node by GridBoundaryConditions::apply, as before). Applied face by
+// face (x-, x+, y-, ...): a later face reads the sums an earlier one folded
+// into its extra nodes, which composes the images of edges and corners
+// (R_x R_y, ...). The face node is its own mirror (its sums double,
 // their ratios do not change) and is left alone. Nothing happens without
 // extra cells or when the BCs do not set the extra nodes.
 #include <vector>
