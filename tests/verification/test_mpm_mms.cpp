@@ -70,10 +70,11 @@ TEST(MpmMmsConvergence, CpdiSecondOrder) {
 //    relative force error at every h; its waves fill the cube within the run,
 //    so it is not a boundary layer). mpm/SymmetryFold.h now folds the
 //    extra-cell sums onto their mirror nodes. 1 ppc gimp: 3.323e-3, 1.151e-3,
-//    8.102e-4 (orders 1.53, 0.51) -> 2.6434e-3, 7.6681e-4, 6.9433e-4 (1.79,
+//    8.102e-4 (orders 1.53, 0.51) -> 2.6383e-3, 7.6560e-4, 6.9419e-4 (1.79,
 //    0.14); the deck's 2 ppc: gimp 2.313e-3, 7.533e-4, 3.089e-4 (1.62, 1.29)
-//    -> 1.9107e-3, 5.2312e-4, 1.9183e-4 (1.87, 1.45); 3rdorderBS 6.41e-3,
-//    2.87e-3 (1.16) -> 2.5868e-3, 7.3191e-4, 2.5208e-4 (1.82, 1.54).
+//    -> 1.9093e-3, 5.2281e-4, 1.9183e-4 (1.87, 1.45); 3rdorderBS 6.41e-3,
+//    2.87e-3 (1.16) -> 2.5349e-3, 7.0259e-4, 2.5208e-4 (1.85, 1.54; the
+//    32^3 values with the first version of the fold, see the docs).
 // 2. The large deformation with undeformed particle domains (intrinsic to
 //    uGIMP and to point-quadrature B-splines): |F_ii - 1| reaches A pi = 0.16
 //    at every h, the domains of length l0 stop tiling the body and the
@@ -103,8 +104,8 @@ TEST(MpmMmsConvergence, CpGimpSecondOrder) {
 }
 
 // The symmetry fold at the deck's 2 particles per cell direction (res
-// [2,2,2]), 8^3 -> 16^3: gimp 1.9107e-3 -> 5.2312e-4 (order 1.87) and
-// 3rdorderBS 2.5868e-3 -> 7.3191e-4 (1.82); without the fold 1.62 and 1.16
+// [2,2,2]), 8^3 -> 16^3: gimp 1.9093e-3 -> 5.2281e-4 (order 1.87) and
+// 3rdorderBS 2.5349e-3 -> 7.0259e-4 (1.85); without the fold 1.62 and 1.16
 // (3rdorderBS was then less accurate with 2 particles per cell than with 1).
 // The 16 -> 32 pair stalls at A = 0.05 (1.45, 1.54; cause 2 above) and takes
 // minutes, so only the first pair is checked.
@@ -130,7 +131,7 @@ TEST(MpmMmsConvergence, QuadraticBsplineTwoPpcSymmetryFold) { EXPECT_GE(order_8_
 // cpti and 4thorderBS at 8^3 and 16^3 (the 32^3 runs take 15-16 s each, so
 // they stay in docs/mpm-convergence.md: cpti 3.7170e-3 before the symmetry
 // fold, 4thorderBS 1.1666e-3). Measured with these settings: cpti 1.1439e-2,
-// 6.8346e-3 (order 0.74; before the fold 1.0452e-2, 6.1525e-3, 0.77);
+// 6.8348e-3 (order 0.74; before the fold 1.0452e-2, 6.1525e-3, 0.77);
 // 4thorderBS 5.6623e-3, 2.4705e-3 (order 1.20; 16 -> 32: 1.08; it uses no
 // extra-cell node, so the fold does not change it). Neither is second order here: Vaango's cpti domain is
 // ONE tetrahedron spanned by the particle's edge vectors, 1/6 of the volume
