@@ -11,6 +11,7 @@
 #include "core/base/PhaseTimers.h"
 #include "mpm/ArtificialViscosity.h"
 #include "mpm/Axisymmetric.h"
+#include "mpm/SymmetryFold.h"
 #include "mpm/DeformationGradient.h"
 #include "mpm/StrainWork.h"
 #include "mpm/GridDamping.h"
@@ -121,6 +122,9 @@ void MpmComponent::interpolate_to_grid(MpmMaterial& m, int step, const char* pha
   m.grid.reset();
   particles_to_grid(m.particles, m.stencils, setup_.gravity, m.grid);
   fold_particle_sums(periodic_, m.grid);  // periodic aliases share the sums
+  // Symmetry faces as mirrors: extra-cell sums onto their mirror nodes (mpm/SymmetryFold.h;
+  // not for axisymmetric runs, whose r = 0 axis is not a plane mirror of the weights).
+  if (!setup_.flags.axisymmetric) fold_symmetry_particle_sums(m.bcs, m.grid);
   m.bcs.apply(m.grid, m.grid.velocity);
 }
 
@@ -136,6 +140,7 @@ void MpmComponent::internal_force(MpmMaterial& m) {
   if (setup_.flags.axisymmetric) axisymmetric_internal_force(m.particles, m.stencils, m.grid);
   else compute_internal_force(m.particles, m.stencils, m.grid);
   fold_internal_force(periodic_, m.grid);
+  if (!setup_.flags.axisymmetric) fold_symmetry_internal_force(m.bcs, m.grid);
 }
 
 // sigma_{n+1}, c, W, history from (F_n, F_{n+1}, l, sigma_n) (Alg. 11); V_{n+1} = J V0 (Alg. 9).
@@ -364,6 +369,7 @@ void MpmComponent::advance(double t, double dt, int step) {
           updated_particle_grid_velocity(m.particles, m.stencils, m.grid, dt,
                                          periodic_.active() ? &periodic_.canonical : nullptr, musl_velocity_[i]);
         }
+        if (!setup_.flags.axisymmetric) fold_symmetry_velocity(m.bcs, m.grid, musl_velocity_[i]);
         m.bcs.apply(m.grid, musl_velocity_[i]);
         std::swap(m.grid.velocity_star, musl_velocity_[i]);  // l_p and contact read g.velocity_star
       }
