@@ -80,7 +80,7 @@ TEST(IceRiemann, ExactSolverReproducesTheStarStatesOfTheDecksReadme) {
   EXPECT_NEAR(sod.sample(sod.u_star() + 1e-9).rho, 0.2406, 1e-4);
 }
 
-Errors convergence_study(const char* advection, double min_rho_order, double min_p_order) {
+Errors convergence_study(const char* advection, double min_rho_order, double min_p_order, double star_tol) {
   const ExactRiemann ex(kSodL, kSodR, 1.4);
   constexpr int kRuns = 4;
   Errors e[kRuns];
@@ -92,9 +92,17 @@ Errors convergence_study(const char* advection, double min_rho_order, double min
     // Star-state plateau at the finest grid: the cell nearest the middle of
     // [contact, shock] (x = 0.643 .. 0.779 m at 0.5 ms).
     if (k == kRuns - 1) {
-      const int mid = static_cast<int>(0.711 * n[k]);
-      EXPECT_NEAR(r.ice->press_CC()[0](mid, 0, 0), ex.p_star(), 0.01 * ex.p_star());
-      EXPECT_NEAR(r.ice->fields()[0].vel_CC[0](mid, 0, 0)[0], ex.u_star(), 0.01 * ex.u_star());
+      const int mid = static_cast<int>(0.711 * n[k]), left = static_cast<int>(0.57 * n[k]);
+      const double p = r.ice->press_CC()[0](mid, 0, 0), u = r.ice->fields()[0].vel_CC[0](mid, 0, 0)[0];
+      const double rho_r = r.ice->fields()[0].rho_CC[0](mid, 0, 0), rho_l = r.ice->fields()[0].rho_CC[0](left, 0, 0);
+      const double rho_r_ex = ex.sample((0.711 - 0.5) / r.time).rho, rho_l_ex = ex.sample((0.57 - 0.5) / r.time).rho;
+      std::printf("Sod %s N=%d star: p* %+.3f%%  u* %+.3f%%  rho*R %+.3f%%  rho*L %+.3f%%\n", advection, n[k],
+                  100 * (p / ex.p_star() - 1), 100 * (u / ex.u_star() - 1), 100 * (rho_r / rho_r_ex - 1),
+                  100 * (rho_l / rho_l_ex - 1));
+      EXPECT_NEAR(p, ex.p_star(), star_tol * ex.p_star());
+      EXPECT_NEAR(u, ex.u_star(), star_tol * ex.u_star());
+      EXPECT_NEAR(rho_r, rho_r_ex, star_tol * rho_r_ex);
+      EXPECT_NEAR(rho_l, rho_l_ex, star_tol * rho_l_ex);
     }
   }
   const double order_rho = std::log2(e[2].rho / e[3].rho), order_p = std::log2(e[2].p / e[3].p);
@@ -111,8 +119,8 @@ Errors convergence_study(const char* advection, double min_rho_order, double min
 // below 0.8 of first order's (observed 0.58).
 TEST(IceRiemann, SodConvergesInL1AndSecondOrderBeatsFirstOrder) {
   set_thread_count(1);  // 1-D tubes: loop-helper threads cost more than they save
-  const Errors first = convergence_study("FirstOrder", 0.5, 0.5);
-  const Errors second = convergence_study("SecondOrder", 0.5, 0.5);
+  const Errors first = convergence_study("FirstOrder", 0.5, 0.5, 0.005);
+  const Errors second = convergence_study("SecondOrder", 0.8, 0.8, 0.003);
   std::printf("Sod N=200: L1(rho) first %.4g second %.4g\n", first.rho, second.rho);
   EXPECT_LT(second.rho, 0.8 * first.rho);
   EXPECT_LT(second.p, 0.8 * first.p);
@@ -171,7 +179,10 @@ const ToroCase kToro[] = {
     {5, {1.0, -19.59745, 1000.0}, {1.0, -19.59745, 0.01}, 0.8, 0.012},
 };
 
-std::string toro_case_deck(const ToroCase& c, int n, const char* advection, double cfl) {
+// walls: symmetry (reflecting) ends instead of Neumann; conserve: the
+// <conserveTotalEnergy> value (docs/ice.md "Total energy at shocks").
+std::string toro_case_deck(const ToroCase& c, int n, const char* advection, double cfl, bool walls = false,
+                           bool conserve = true) {
   auto state = [](const GasState& s) {
     std::ostringstream x;
     x.precision(17);
@@ -185,7 +196,8 @@ std::string toro_case_deck(const ToroCase& c, int n, const char* advection, doub
   <Time><maxTime>)" << c.t_end << R"(</maxTime><initTime>0</initTime><delt_min>0</delt_min><delt_max>1</delt_max>
   <delt_init>1e-8</delt_init></Time>
   <DataArchiver><filebase>toro.uda</filebase><outputInterval>1</outputInterval></DataArchiver>
-  <CFD><cfl>)" << cfl << R"(</cfl><ICE><advection type=")" << advection << R"("/></ICE></CFD>
+  <CFD><cfl>)" << cfl << R"(</cfl><ICE><advection type=")" << advection << R"("/><conserveTotalEnergy>)"
+    << (conserve ? "true" : "false") << R"(</conserveTotalEnergy></ICE></CFD>
   <PhysicalConstants><gravity>[0,0,0]</gravity><reference_pressure>101325</reference_pressure></PhysicalConstants>
   <MaterialProperties><ICE><material><EOS type="ideal_gas"/><dynamic_viscosity>0</dynamic_viscosity>
    <thermal_conductivity>0</thermal_conductivity><specific_heat>1</specific_heat><gamma>1.4</gamma>
@@ -195,7 +207,8 @@ std::string toro_case_deck(const ToroCase& c, int n, const char* advection, doub
    <geom_object><box label="right"/>)" << state(c.R) << R"(</geom_object></material></ICE></MaterialProperties>
   <Grid><BoundaryConditions>)";
   for (const char* side : {"x-", "x+"})
-    x << "<Face side=\"" << side << R"("><BCType id="0" label="Pressure" var="Neumann"><value>0</value></BCType>
+    if (walls) x << "<Face side=\"" << side << R"("><BCType id="0" label="Symmetric" var="symmetry"/></Face>)";
+    else x << "<Face side=\"" << side << R"("><BCType id="0" label="Pressure" var="Neumann"><value>0</value></BCType>
       <BCType id="0" label="Velocity" var="Neumann"><value>[0,0,0]</value></BCType>
       <BCType id="0" label="Temperature" var="Neumann"><value>0</value></BCType>
       <BCType id="0" label="Density" var="Neumann"><value>0</value></BCType>
@@ -233,6 +246,57 @@ ToroResult run_toro(const ToroCase& c, int n, const char* advection, double cfl)
   out.steps = r.steps;
   out.e = l1_errors(r, ExactRiemann(c.L, c.R, 1.4), c.x0);
   return out;
+}
+
+// Total energy sum_c rho V (c_v T + |u|^2/2) over the interior cells (c_v = 1 in these decks).
+double total_energy(const IceComponent& ice) {
+  const Grid& g = ice.grid();
+  const double V = g.cell_volume();
+  double e = 0;
+  for (int i = 0; i < g.cells[0]; ++i) {
+    const IceMaterialFields& f = ice.fields()[0];
+    e += f.rho_CC[0](i, 0, 0) * V * (f.temp_CC[0](i, 0, 0) + 0.5 * f.vel_CC[0](i, 0, 0).squaredNorm());
+  }
+  return e;
+}
+
+// Energy budget of an isolated tube: Sod's states (Toro test 1 with u = 0:
+// 1, 0, 1 | 0.125, 0, 0.1, x0 = 0.5) between reflecting walls, run to t = 0.4
+// (the shock has hit the right wall and runs back, the rarefaction has
+// reflected from the left wall). No energy crosses a wall (face velocity 0),
+// so E(t) = E(0) exactly; with <conserveTotalEnergy> each step changes E by
+// round-off only (the corrections are differences of face fluxes, docs/ice.md).
+// Uintah's energy equation (false) loses a measured fraction, asserted > 1e-3
+// so that this test shows the difference.
+TEST(IceRiemann, ClosedShockTubeConservesTotalEnergyToRoundOff) {
+  set_thread_count(1);
+  const ToroCase sod{1, {1.0, 0.0, 1.0}, {0.125, 0.0, 0.1}, 0.5, 0.4};
+  for (const char* adv : {"FirstOrder", "SecondOrder"}) {
+    for (bool conserve : {true, false}) {
+      test::IceRun r;
+      r.deck = load_deck_from_string(toro_case_deck(sod, 200, adv, 0.4, true, conserve), "tube.ups", ".");
+      r.ice = make_ice_component(*r.deck);
+      r.ice->initialize();
+      const double e0 = total_energy(*r.ice);
+      double worst_step = 0;
+      while (r.time < sod.t_end * (1 - 1e-14)) {
+        const double dt = std::min(r.steps == 0 ? 1e-8 : r.ice->stable_timestep(), sod.t_end - r.time);
+        const double before = total_energy(*r.ice);
+        r.ice->advance(r.time, dt, ++r.steps);
+        r.time += dt;
+        worst_step = std::max(worst_step, std::abs(total_energy(*r.ice) - before) / e0);
+      }
+      const double drift = total_energy(*r.ice) / e0 - 1.0;
+      std::printf("closed tube %s conserveTotalEnergy=%d: %d steps, E/E0 - 1 = %.3g, worst step %.3g\n", adv, conserve,
+                  r.steps, drift, worst_step);
+      if (conserve) {
+        EXPECT_LT(std::abs(drift), 1e-13) << adv;
+        EXPECT_LT(worst_step, 1e-14) << adv;
+      } else {
+        EXPECT_LT(drift, -1e-3) << adv;
+      }
+    }
+  }
 }
 
 TEST(IceRiemann, ToroTests2To5KeepDensityAndPressurePositive) {
