@@ -130,54 +130,6 @@ void specific_fluxes(const Grid& g, AdvectionOrder order, const PatchFields<Cell
   }
 }
 
-void bound_specific_fluxes(const Grid& g, const CellScalars& psi, const CellScalars& mass,
-                           const FaceScalars& mass_flux, HaloExchange& halo, CellScalars& beta, FaceScalars& flux) {
-  for (std::size_t pi = 0; pi < g.patches.size(); ++pi) {
-    beta[pi].fill(1.0);  // extra cells: no slope, nothing to bound
-    const GridArray<double>& q = psi[pi];
-    for_each_cell(g.patches[pi].cells(), [&](int i, int j, int k) {
-      const IntVec3 D(i, j, k);
-      const double qD = q(D);
-      double out_mass = 0, S = 0, lo = qD, hi = qD;
-      for (int d = 0; d < 3; ++d) {
-        const IntVec3 e = IntVec3::Unit(d), up(D + e);
-        const GridArray<double>& F = mass_flux.at(d, pi);
-        const GridArray<double>& Fq = flux.at(d, pi);
-        if (F(up) > 0.0) {  // outflow through the high face
-          out_mass += F(up);
-          S += Fq(up) - F(up) * qD;
-        }
-        if (F(D) < 0.0) {  // outflow through the low face
-          out_mass -= F(D);
-          S -= Fq(D) - F(D) * qD;
-        }
-        lo = std::min({lo, q(IntVec3(D - e)), q(up)});
-        hi = std::max({hi, q(IntVec3(D - e)), q(up)});
-      }
-      const double rem = std::max(0.0, mass[pi](D) - out_mass);
-      double b = 1.0;
-      if (S > 0.0 && rem * (qD - lo) < S) b = rem * (qD - lo) / S;
-      if (S < 0.0 && rem * (qD - hi) > S) b = rem * (qD - hi) / S;
-      beta[pi](D) = std::max(0.0, b);
-    });
-  }
-  halo.exchange(beta);
-  for (std::size_t pi = 0; pi < g.patches.size(); ++pi)
-    for (int d = 0; d < 3; ++d) {
-      const GridArray<double>& F = mass_flux.at(d, pi);
-      GridArray<double>& Fq = flux.at(d, pi);
-      const IntVec3 e = IntVec3::Unit(d);
-      for_each_cell(faces_of(g.patches[pi], d), [&](int i, int j, int k) {
-        const IntVec3 f(i, j, k);
-        const double mf = F(f);
-        if (mf == 0.0) return;
-        const IntVec3 D = mf > 0.0 ? IntVec3(f - e) : f;
-        const double b = beta[pi](D);
-        if (b < 1.0) Fq(f) = mf * psi[pi](D) + b * (Fq(f) - mf * psi[pi](D));
-      });
-    }
-}
-
 template <class T>
 void flux_divergence(const Grid& g, const FaceData<T>& flux, PatchFields<CellField<T>>& dq) {
   for (std::size_t pi = 0; pi < g.patches.size(); ++pi) {

@@ -27,7 +27,6 @@
 // (mass_massVertex_ratio); here psi's slab value uses psi's own limited
 // gradient at the geometric slab centroid.
 #include "core/grid/Grid.h"
-#include "core/grid/HaloExchange.h"
 #include "ice/IceFields.h"
 #include "ice/IceSetup.h"
 
@@ -48,23 +47,6 @@ void density_fluxes(const Grid& g, AdvectionOrder order, const CellScalars& q, c
 template <class T>
 void specific_fluxes(const Grid& g, AdvectionOrder order, const PatchFields<CellField<T>>& psi,
                      const FaceScalars& u, const FaceScalars& mass_flux, double dt, FaceData<T>& flux);
-
-// Bounds the second-order compatible fluxes of a specific quantity psi
-// (flux = F psi_slab, from specific_fluxes) so that what stays in each donor
-// cell D keeps a value inside [psi_min, psi_max] of D and its six neighbours:
-// with M_rem = M_D - sum_out F and S = sum_out F (psi_slab - psi_D) over D's
-// outgoing faces, the remainder's value is (M_rem psi_D - beta S)/M_rem, and
-//   beta_D = min(1, M_rem (psi_D - psi_min)/S)  (S > 0),  min(1, M_rem (psi_D - psi_max)/S)  (S < 0)
-// scales D's slab deviations: flux = F psi_D + beta_D (flux - F psi_D). The
-// new cell value is then a mass-weighted mean of bounded parts (positive for
-// a positive psi). Without it a donor that loses nearly all its mass through
-// two faces (Toro's test 2) can keep a negative content, because the mass
-// slabs and the psi slabs use different slopes (Uintah weights psi's vertex
-// values with mass/mass_vertex instead). beta is 1 in smooth flow. Fluxes stay
-// single-valued per face, so the update stays conservative. beta: scratch
-// cell field (one ghost layer, exchanged through halo).
-void bound_specific_fluxes(const Grid& g, const CellScalars& psi, const CellScalars& mass,
-                           const FaceScalars& mass_flux, HaloExchange& halo, CellScalars& beta, FaceScalars& flux);
 
 // dq(c) = sum of incoming minus outgoing fluxes over the six faces of each
 // interior cell c (in units of q times the cell volume).

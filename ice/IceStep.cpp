@@ -228,7 +228,9 @@ void IceComponent::lagrangian_values_and_exchange(double dt) {
   const Grid& g = setup_.grid;
   const std::size_t nm = mats_.size();
   const double V = g.cell_volume();
-  if (setup_.conserve_total_energy) face_pressure_work(dt);  // IceEnergy.cpp
+  // Single-material runs only (IceEnergy.cpp): with several materials the per-material
+  // split of the correction heated trace materials to negative temperatures (docs/ice.md).
+  if (setup_.conserve_total_energy && mats_.size() == 1) face_pressure_work(dt);  // IceEnergy.cpp
   for (std::size_t pi = 0; pi < g.patches.size(); ++pi) {
     const Patch& patch = g.patches[pi];
     // Momentum and energy sources, Lagrangian values.
@@ -277,7 +279,7 @@ void IceComponent::lagrangian_values_and_exchange(double dt) {
         vel_L_[m][pi](c) = mom_L / mass_L;
         temp_L_[m][pi](c) = eint_L / (mass_L * cv);
       });
-      if (setup_.conserve_total_energy) add_face_pressure_work(m, pi, dt);  // IceEnergy.cpp
+      if (setup_.conserve_total_energy && mats_.size() == 1) add_face_pressure_work(m, pi, dt);  // IceEnergy.cpp
     }
     // Momentum and heat exchange, cell by cell.
     if (nm > 1) {
@@ -453,15 +455,13 @@ void IceComponent::advect_and_advance(double dt, int step) {
       const CellScalars& psi = q == 0 ? temp_L_[m] : spv_L_[m];
       CellScalars& out = q == 0 ? f.temp_CC : f.sp_vol_CC;
       specific_fluxes(g, setup_.advection, psi, f.vel_FCME, flux_, dt, flux2_);
-      // Positive specific quantities: keep each donor's remainder in its neighbours' range (dq_ as scratch).
-      if (setup_.advection == AdvectionOrder::Second) bound_specific_fluxes(g, psi, mass_L_[m], flux_, *halo_, dq_, flux2_);
       flux_divergence(g, flux2_, dq_);
       for (std::size_t pi = 0; pi < g.patches.size(); ++pi)
         for_each_cell(g.patches[pi].cells(), [&](int i, int j, int k) {
           out[pi](i, j, k) = (mass_L_[m][pi](i, j, k) * psi[pi](i, j, k) + dq_[pi](i, j, k)) / mass_new_[pi](i, j, k);
         });
     }
-    if (setup_.conserve_total_energy) add_advected_kinetic_energy_loss(m);  // IceEnergy.cpp
+    if (setup_.conserve_total_energy && mats_.size() == 1) add_advected_kinetic_energy_loss(m);  // IceEnergy.cpp
     if (model_src_) advect_model_scalars(m, dt);
     apply_state_bcs(m);
   }
