@@ -307,7 +307,8 @@ TEST(IceReactions, PassiveScalarBlobConservesItsIntegral) {
 
 // Stability sweep of <cfl> on the JWL++ ANFO detonation (the 60-cell, 3 cm
 // tube above with its open x+ end, run to 3 us, aggressive time step,
-// the deck's first-order advection, <conserveTotalEnergy> default). Each run either
+// the deck's first-order advection; two materials, so Uintah's energy
+// equation: docs/ice.md "Total energy at shocks"). Each run either
 // reaches 3 us with finite, positive states (check_state after every step) or
 // stops with NumericalFailure (exit 4 through tephra) naming the cell; any
 // other exception fails. Measured (docs/ice.md "Stability"): cfl 0.1 ... 1.2
