@@ -46,6 +46,7 @@ void IceComponent::initialize() {
   press_FC_ = FaceScalars(g, 0);
   mass_L_.assign(nm, CellScalars(g, kGhosts));
   temp_L_.assign(nm, CellScalars(g, kGhosts));
+  if (setup_.conserve_total_energy) work_corr_.assign(nm, CellScalars(g, kGhosts));
   spv_L_.assign(nm, CellScalars(g, kGhosts));
   cv_CC_.assign(nm, CellScalars(g, kGhosts));
   vel_L_.assign(nm, CellVectors(g, kGhosts));

@@ -55,6 +55,12 @@ class IceComponent final : public Component {
   void lagrangian_values_and_exchange(double dt);
   void compute_diffusion_sources(std::size_t m, std::size_t pi);
   void advect_and_advance(double dt, int step);
+  // Total-energy corrections (IceEnergy.cpp, <conserveTotalEnergy>): the
+  // face-pressure work in the Lagrangian phase and DeBar's kinetic energy
+  // lost by the advection.
+  void face_pressure_work(double dt);
+  void add_face_pressure_work(std::size_t m, std::size_t pi, double dt);
+  void add_advected_kinetic_energy_loss(std::size_t m);
   // Source models (IceModelStep.cpp, ice/models/): their sources, the volume
   // fractions they change, the mass-exchange pressure term, and their scalars.
   void allocate_model_storage();
@@ -88,6 +94,7 @@ class IceComponent final : public Component {
   // Lagrangian quantities of the step, per material (scratch): mass, and the
   // specific quantities advected with it (velocity, temperature, specific volume).
   std::vector<CellScalars> mass_L_, temp_L_, spv_L_, cv_CC_;  // cv_CC_: c_v per cell for the step
+  std::vector<CellScalars> work_corr_;  // face-pressure minus cell-pressure work (IceEnergy.cpp)
   std::vector<CellVectors> vel_L_;
   FaceScalars flux_, flux2_;
   FaceData<Vec3> flux_v_;

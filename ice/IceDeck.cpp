@@ -343,6 +343,8 @@ void parse_cfd(const DeckNode& root, IceSetup& s) {
           parse_implicit_solver(i, s);
         } else if (i.name == "ClampSpecificVolume") {
           s.clamp_sp_vol = i.as_bool();
+        } else if (i.name == "conserveTotalEnergy") {
+          s.conserve_total_energy = i.as_bool();
         } else if (i.name == "ADD_HEAT") {
           // read with the models (ice/models/FluidModels.cpp)
         } else {

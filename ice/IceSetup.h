@@ -95,6 +95,11 @@ struct IceSetup {
   // <ClampSpecificVolume>: M v_L >= tiny_rho rho_0 V v after the Lagrangian
   // specific volume (Uintah's clamp, used with the JWL++ decks).
   bool clamp_sp_vol = false;
+  // <conserveTotalEnergy> (Tephra extension, default true): return the
+  // kinetic energy lost by the momentum advection and the face-pressure work
+  // to the internal energy (ice/IceEnergy.cpp, docs/ice.md). false: Uintah's
+  // energy equation.
+  bool conserve_total_energy = true;
   // <Models><Model> and <CFD><ICE><ADD_HEAT> (ice/models/IceModel.h).
   std::vector<std::shared_ptr<IceModel>> models;
   LodiSettings lodi;  // <BoundaryConditions><LODI> (enabled when a face uses var="LODI")

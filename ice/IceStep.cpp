@@ -255,6 +255,9 @@ void IceComponent::lagrangian_values_and_exchange(double dt) {
   const Grid& g = setup_.grid;
   const std::size_t nm = mats_.size();
   const double V = g.cell_volume();
+  // Single-material runs only (IceEnergy.cpp): with several materials the per-material
+  // split of the correction heated trace materials to negative temperatures (docs/ice.md).
+  if (setup_.conserve_total_energy && mats_.size() == 1) face_pressure_work(dt);  // IceEnergy.cpp
   for (std::size_t pi = 0; pi < g.patches.size(); ++pi) {
     const Patch& patch = g.patches[pi];
     // Momentum and energy sources, Lagrangian values.
@@ -303,6 +306,7 @@ void IceComponent::lagrangian_values_and_exchange(double dt) {
         vel_L_[m][pi](c) = mom_L / mass_L;
         temp_L_[m][pi](c) = eint_L / (mass_L * cv);
       });
+      if (setup_.conserve_total_energy && mats_.size() == 1) add_face_pressure_work(m, pi, dt);  // IceEnergy.cpp
     }
     // Momentum and heat exchange, cell by cell.
     if (nm > 1) {
@@ -507,6 +511,7 @@ void IceComponent::advect_and_advance(double dt, int step) {
           out[pi](i, j, k) = (mass_L_[m][pi](i, j, k) * psi[pi](i, j, k) + dq_[pi](i, j, k)) / mass_new_[pi](i, j, k);
         });
     }
+    if (setup_.conserve_total_energy && mats_.size() == 1) add_advected_kinetic_energy_loss(m);  // IceEnergy.cpp
     if (model_src_) advect_model_scalars(m, dt);
     apply_state_bcs(m);
   }
