@@ -479,6 +479,14 @@ IceSetup read_ice_setup(const Deck& deck, std::vector<IceMaterialSpec> solids) {
   const DeckNode& props = root.require_child("MaterialProperties");
   const DeckNode& ice = props.require_child("ICE");
   GeometryRegistry geometry;
+  // MPMICE: geometry labels are deck-wide (Uintah), so an ICE geom_object may
+  // refer to a piece labelled in an MPM material: read those first.
+  if (!s.materials.empty())
+    if (const DeckNode* mpm = props.child("MPM"))
+      for (const DeckNode& mat : mpm->children)
+        if (mat.name == "material")
+          for (const DeckNode& go : mat.children)
+            if (go.name == "geom_object") geometry.parse_geom_object(go);
   for (const DeckNode& c : ice.children) {
     if (c.name == "material") s.materials.push_back(parse_material(c, int(s.materials.size()), geometry));
     else c.missing_feature("<MaterialProperties><ICE><" + c.name + ">");
