@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 #include <sstream>
+#include <stdexcept>
 
 #include "core/base/PhaseTimers.h"
 #include "core/grid/Loop.h"
@@ -71,6 +72,12 @@ void IceComponent::initialize() {
   for (std::size_t m = 0; m < nm; ++m) {
     const IceMaterialSpec& spec = setup_.materials[m];
     IceMaterialFields& f = mats_[m];
+    if (spec.lagrangian) {  // MPMICE solid: state from the particles (lagrangian_fill_ below)
+      f.vol_frac_CC.fill(0.0);
+      f.vel_CC.fill(Vec3::Zero());
+      f.mom_source_CC.fill(Vec3::Zero());
+      continue;
+    }
     // Ghost entries outside the domain stay at harmless values.
     f.rho_CC.fill(spec.sources[0].density);
     f.temp_CC.fill(spec.sources[0].temperature);
@@ -124,12 +131,70 @@ void IceComponent::initialize() {
   press_CC_.fill(setup_.reference_pressure);
   press_equil_CC_.fill(setup_.reference_pressure);
   delP_Dilatate_.fill(0.0);
+  for (const IceMaterialSpec& spec : setup_.materials)
+    if (spec.lagrangian && !lagrangian_fill_)
+      throw std::logic_error("IceComponent: a lagrangian (MPM) material needs set_lagrangian_state_fill()");
+  if (lagrangian_fill_) {
+    lagrangian_fill_(*this);
+    fluids_fill_volume_left_by_solids();
+  }
   compute_equilibration_pressure(0);
   for (std::size_t pi = 0; pi < g.patches.size(); ++pi)
     press_CC_[pi] = press_equil_CC_[pi];
   for (std::size_t m = 0; m < nm; ++m) apply_state_bcs(m);
   allocate_model_storage();
   check_state(0, "initialization");
+}
+
+// MPMICE initial state: the solids' cell volume fraction theta_s = sum over
+// the lagrangian materials of rho_CC_s sp_vol_s comes from the particles
+// projected to the nodes and averaged to the cells, which smears a solid
+// surface over the cells next to it; the fluids' fractions from their
+// geom_objects do not see that smearing, and the two would not sum to 1 (a
+// pressure jump at the surface at t = 0). So each fluid keeps its micro state
+// (rho_micro = 1/sp_vol, T, u) and its share f_m / sum f of the fluid
+// geometry, and fills the volume the solids leave:
+//   theta_m = f_m (1 - theta_s) / sum_f f,   rho_CC_m = theta_m / sp_vol_m.
+// A cell the fluid geometry leaves empty (sum f = 0) is filled by the first
+// fluid material in its first source's state. (Departure from Uintah, which
+// keeps the geometric fractions; docs/mpmice.md.)
+void IceComponent::fluids_fill_volume_left_by_solids() {
+  const Grid& g = setup_.grid;
+  const std::size_t nm = mats_.size();
+  std::size_t first_fluid = nm;
+  for (std::size_t m = 0; m < nm; ++m)
+    if (!setup_.materials[m].lagrangian) {
+      first_fluid = m;
+      break;
+    }
+  if (first_fluid == nm) return;
+  for (std::size_t pi = 0; pi < g.patches.size(); ++pi)
+    for_each_cell_serial(g.patches[pi].cells_with_extra(), [&](int i, int j, int k) {
+      const IntVec3 c(i, j, k);
+      double theta_s = 0, sum_f = 0;
+      for (std::size_t m = 0; m < nm; ++m) {
+        const double frac = mats_[m].rho_CC[pi](c) * mats_[m].sp_vol_CC[pi](c);
+        (setup_.materials[m].lagrangian ? theta_s : sum_f) += frac;
+      }
+      const double left = std::max(0.0, 1.0 - theta_s);
+      const double tiny = 1e-12;
+      if (sum_f > tiny) {
+        for (std::size_t m = 0; m < nm; ++m)
+          if (!setup_.materials[m].lagrangian) {
+            const IceMaterialSpec& spec = setup_.materials[m];
+            const double frac = mats_[m].rho_CC[pi](c) * mats_[m].sp_vol_CC[pi](c);
+            const double theta = frac * left / sum_f;
+            mats_[m].rho_CC[pi](c) = std::max(theta / mats_[m].sp_vol_CC[pi](c), spec.tiny_rho * spec.sources[0].density);
+          }
+      } else {
+        const IceSource& s0 = setup_.materials[first_fluid].sources[0];
+        IceMaterialFields& f = mats_[first_fluid];
+        f.rho_CC[pi](c) = std::max(left * s0.density, setup_.materials[first_fluid].tiny_rho * s0.density);
+        f.sp_vol_CC[pi](c) = 1.0 / s0.density;
+        f.temp_CC[pi](c) = s0.temperature;
+        f.vel_CC[pi](c) = s0.velocity;
+      }
+    });
 }
 
 // Uintah's ICE time step (computeStableTimestep), knob = knob_for_speedSound:
@@ -227,6 +292,25 @@ void IceComponent::advance_one(double dt, int step) {
     { PhaseTimers::Scope s(T, "ICE: pressure increment");         compute_delP_and_pressure(dt); }
   }
   { PhaseTimers::Scope s(T, "ICE: face pressure");                compute_face_pressure(); }
+  { PhaseTimers::Scope s(T, "ICE: Lagrangian values, exchange");  lagrangian_values_and_exchange(dt); }
+  { PhaseTimers::Scope s(T, "ICE: advection");                    advect_and_advance(dt, step); }
+  check_state(step, "end of step");
+}
+
+// The coupled MPMICE step calls the explicit step in two halves (the order
+// of advance_one, without source models or the implicit pressure, which the
+// MPMICE deck reader rejects for now).
+void IceComponent::coupled_pressure_phases(double dt, int step) {
+  PhaseTimers& T = phase_timers();
+  { PhaseTimers::Scope s(T, "ICE: equilibration pressure");       compute_equilibration_pressure(step); }
+  { PhaseTimers::Scope s(T, "ICE: face velocities");              compute_face_velocities(dt, press_equil_CC_); }
+  { PhaseTimers::Scope s(T, "ICE: face momentum exchange");       add_exchange_to_face_velocities(dt); }
+  { PhaseTimers::Scope s(T, "ICE: pressure increment");           compute_delP_and_pressure(dt); }
+  { PhaseTimers::Scope s(T, "ICE: face pressure");                compute_face_pressure(); }
+}
+
+void IceComponent::coupled_transport_phases(double dt, int step) {
+  PhaseTimers& T = phase_timers();
   { PhaseTimers::Scope s(T, "ICE: Lagrangian values, exchange");  lagrangian_values_and_exchange(dt); }
   { PhaseTimers::Scope s(T, "ICE: advection");                    advect_and_advance(dt, step); }
   check_state(step, "end of step");

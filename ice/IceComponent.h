@@ -4,6 +4,7 @@
 // parts; Uintah's explicit ICE where the manual is silent). advance() in
 // IceComponent.cpp lists the step, one named phase per line; docs/ice.md
 // gives the equations.
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -45,6 +46,23 @@ class IceComponent final : public Component {
   int last_outer_iterations() const { return last_outer_iterations_; }
   int step_restarts() const { return step_restarts_; }
 
+  // ---- MPMICE hooks (mpmice/MpmIceComponent.cpp). Materials with
+  // IceMaterialSpec::lagrangian get their cell state from the particles:
+  // `fill` is called by initialize() (before the first equilibration) to set
+  // it; the coupled step then calls the two halves of the explicit step
+  // around the MPM internal force.
+  void set_lagrangian_state_fill(std::function<void(IceComponent&)> fill) { lagrangian_fill_ = std::move(fill); }
+  std::vector<IceMaterialFields>& mutable_fields() { return mats_; }
+  // Steps 2-6 of the coupled order: equilibration pressure, face velocities
+  // and their exchange, pressure increment, face pressure.
+  void coupled_pressure_phases(double dt, int step);
+  // Steps 8-12: Lagrangian values, exchange, specific volume, advection of
+  // the fluids (not of the lagrangian materials), state check.
+  void coupled_transport_phases(double dt, int step);
+  // The Lagrangian velocity and temperature after exchange of material m (last step).
+  const CellVectors& lagrangian_velocity(std::size_t m) const { return vel_L_[m]; }
+  const CellScalars& lagrangian_temperature(std::size_t m) const { return temp_L_[m]; }
+
  private:
   // Phases of the step (IceStep.cpp), in order.
   void compute_equilibration_pressure(int step);
@@ -78,6 +96,7 @@ class IceComponent final : public Component {
     std::string why;
   };
 
+  void fluids_fill_volume_left_by_solids();  // MPMICE initial state (IceComponent.cpp)
   void apply_state_bcs(std::size_t m);  // rho, vel, temp, sp_vol extra cells of material m
   // LODI faces (IceLodiBcs.cpp, ice/Lodi.h): the pressure, the Lagrangian
   // velocity/temperature and the new state of the LODI material.
@@ -116,7 +135,14 @@ class IceComponent final : public Component {
   std::unique_ptr<IceModelSources> model_src_;
   CellScalars delP_MassX_, scalar_L_;
   double time_ = 0;
+  std::function<void(IceComponent&)> lagrangian_fill_;  // MPMICE: solid cell state from the particles
 };
+
+// The ICE part of a deck (make_ice_component), with `solids` (an MPMICE run's
+// MPM materials, lagrangian) numbered first, as Uintah numbers MPM materials
+// before ICE materials: exchange coefficients and boundary-condition ids
+// count over all of them.
+IceSetup read_ice_setup(const Deck& deck, std::vector<IceMaterialSpec> solids);
 
 // Reads <CFD><ICE>, <MaterialProperties><ICE>, <exchange_properties>,
 // <PhysicalConstants>, <Grid> and its <BoundaryConditions>.

@@ -453,8 +453,15 @@ void read_lodi(const BoundaryConditions& bcs, IceSetup& s) {
 std::vector<std::string> ice_advection_types() { return {"FirstOrder", "SecondOrder"}; }
 
 std::unique_ptr<IceComponent> make_ice_component(const Deck& deck) {
+  if (const DeckNode* mpm = deck.root.require_child("MaterialProperties").child("MPM"))
+    mpm->missing_feature("MPM materials in an ICE run (use mpmice)");
+  return std::make_unique<IceComponent>(read_ice_setup(deck, {}));
+}
+
+IceSetup read_ice_setup(const Deck& deck, std::vector<IceMaterialSpec> solids) {
   const DeckNode& root = deck.root;
   IceSetup s;
+  s.materials = std::move(solids);
   const DeckNode& grid_node = root.require_child("Grid");
   s.grid = make_grid(grid_node);
   // A periodic direction has no extra cells (make_grid enforces it): its
@@ -474,13 +481,23 @@ std::unique_ptr<IceComponent> make_ice_component(const Deck& deck) {
   const DeckNode& props = root.require_child("MaterialProperties");
   const DeckNode& ice = props.require_child("ICE");
   GeometryRegistry geometry;
+  // MPMICE: geometry labels are deck-wide (Uintah), so an ICE geom_object may
+  // refer to a piece labelled in an MPM material: read those first.
+  if (!s.materials.empty())
+    if (const DeckNode* mpm = props.child("MPM"))
+      for (const DeckNode& mat : mpm->children)
+        if (mat.name == "material")
+          for (const DeckNode& go : mat.children)
+            if (go.name == "geom_object") geometry.parse_geom_object(go);
   for (const DeckNode& c : ice.children) {
     if (c.name == "material") s.materials.push_back(parse_material(c, int(s.materials.size()), geometry));
     else c.missing_feature("<MaterialProperties><ICE><" + c.name + ">");
   }
-  if (s.materials.empty()) ice.fail("<MaterialProperties><ICE> has no <material>");
-  if (s.materials.size() > std::size_t(kMaxExchangeMaterials)) ice.missing_feature("more than 16 ICE materials");
-  if (const DeckNode* mpm = props.child("MPM")) mpm->missing_feature("MPM materials in an ICE run (use mpmice)");
+  if (s.materials.empty() ||
+      std::none_of(s.materials.begin(), s.materials.end(), [](const IceMaterialSpec& m) { return !m.lagrangian; }))
+    ice.fail("<MaterialProperties><ICE> has no <material>");
+  if (s.materials.size() > std::size_t(kMaxExchangeMaterials))
+    ice.missing_feature("more than 16 materials in the exchange (MPM + ICE)");
 
   const int n = int(s.materials.size());
   const DeckNode* ec = nullptr;
@@ -495,7 +512,7 @@ std::unique_ptr<IceComponent> make_ice_component(const Deck& deck) {
       }
     }
   }
-  if (n > 1 && !ec) props.fail("two or more ICE materials need <exchange_properties><exchange_coefficients>");
+  if (n > 1 && !ec) props.fail("two or more materials need <exchange_properties><exchange_coefficients>");
   s.K = parse_coefficients(ec, "momentum", n);
   s.H = parse_coefficients(ec, "heat", n);
 
@@ -526,7 +543,7 @@ std::unique_ptr<IceComponent> make_ice_component(const Deck& deck) {
   if (!s.models.empty() && s.implicit.enabled)
     root.require_child("CFD").missing_feature("reaction/source models with the implicit pressure solve");
   read_lodi(bcs, s);
-  return std::make_unique<IceComponent>(std::move(s));
+  return s;
 }
 
 }  // namespace tephra

@@ -159,6 +159,7 @@ std::map<std::string, std::vector<double>> IceComponent::reductions(const std::s
   double mass = 0, ke = 0, ie = 0;
   Vec3 mom = Vec3::Zero();
   for (std::size_t m = 0; m < mats_.size(); ++m) {
+    if (setup_.materials[m].lagrangian) continue;  // MPMICE solids: counted by their particles
     const double cv = setup_.materials[m].cv;
     for (std::size_t pi = 0; pi < g.patches.size(); ++pi) {
       const IndexRange r = g.patches[pi].cells();

@@ -38,6 +38,12 @@ struct IceMaterialSpec {
   double dynamic_viscosity = 0, thermal_conductivity = 0;  // mu [Pa s], k [W/(m K)] (ice/Diffusion.h)
   double tiny_rho = 1e-12;   // <tiny_rho>: rho_CC = tiny_rho * rho_micro where a material is absent
   std::vector<IceSource> sources;
+  // An MPM material of an MPMICE run (mpmice/MpmIceComponent.h): its cell
+  // state (rho_CC, vel_CC, temp_CC, sp_vol_CC) is set from the particles at
+  // the start of every step; ICE takes it through equilibration, face
+  // velocities, pressure and exchange but neither advects it nor adds gravity
+  // (the MPM grid does). eos wraps the constitutive model's pressure hooks.
+  bool lagrangian = false;
 };
 
 enum class AdvectionOrder { First, Second };

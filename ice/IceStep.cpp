@@ -266,6 +266,7 @@ void IceComponent::lagrangian_values_and_exchange(double dt) {
       // c_v per cell: the constant <specific_heat>, or <SpecificHeatModel> c_v(T^n)
       // at the start of the step (Uintah evaluates cv from temp_CC and keeps it for the step).
       const IceSpecificHeat* cv_model = setup_.materials[m].cv_model.get();
+      const Vec3 gravity = setup_.materials[m].lagrangian ? Vec3::Zero() : setup_.gravity;
       const double cv_const = setup_.materials[m].cv;
       for_each_cell(patch.cells_with_extra(), [&](int i, int j, int k) {
         mass_L_[m][pi](i, j, k) = f.rho_CC[pi](i, j, k) * V;
@@ -284,7 +285,8 @@ void IceComponent::lagrangian_values_and_exchange(double dt) {
           grad_p[d] = (pf(IntVec3(c + IntVec3::Unit(d))) - pf(c)) / g.dx[d];
         }
         // Viscous force and conduction (Diffusion.h): dt V div(theta tau), dt V div(theta k grad T).
-        const Vec3 source = dt * (-V * theta * grad_p + mass * setup_.gravity + V * visc_force_[pi](c));
+        // A lagrangian (MPM) material gets gravity on the MPM grid instead.
+        const Vec3 source = dt * (-V * theta * grad_p + mass * gravity + V * visc_force_[pi](c));
         f.mom_source_CC[pi](c) = source;
         Vec3 mom_L = mass * f.vel_CC[pi](c) + source;
         const double ss = f.speedSound_CC[pi](c);
@@ -485,6 +487,7 @@ void IceComponent::advect_and_advance(double dt, int step) {
   const Grid& g = setup_.grid;
   const double V = g.cell_volume();
   for (std::size_t m = 0; m < mats_.size(); ++m) {
+    if (setup_.materials[m].lagrangian) continue;  // MPMICE solid: the particles carry it (mpmice/)
     IceMaterialFields& f = mats_[m];
     check_outflux(g, f.vel_FCME, dt, step);
     // Mass first; its face fluxes carry the specific quantities.

@@ -47,6 +47,9 @@ GridBoundaryConditions parse_grid_boundary_conditions(const DeckNode* bcs, int m
       if (label == "Velocity" && var == "Dirichlet") {
         out.face[f].kind = FaceVelocityBC::Kind::Velocity;
         out.face[f].value = bc.get_vec3("value");
+      } else if (label == "Velocity" && var == "Neumann" && bc.get_vec3("value").isZero()) {
+        // Zero gradient (the MPMICE decks' open faces): a free face for the
+        // grid, nothing to impose (Vaango's MPM applies only Dirichlet/symmetry).
       } else if (label == "Temperature" && var == "Dirichlet") {
         out.temperature[f] = bc.get_double("value");
       } else if (label == "Temperature" && var == "Neumann" && bc.get_double("value") == 0.0) {

@@ -304,12 +304,15 @@ void MpmComponent::advance(double t, double dt, int step) {
   apply_loads(t);
   // 1-3. Body force (gravity) and external loads enter P2G: m_g, V_g, v_g, f_ext,g (Alg. 5, eq. 1.69).
   for (MpmMaterial& m : mats) interpolate_to_grid(m, step, "interpolate particles to grid");
+  // MPMICE steps 1-6: node -> cell, equilibration, face velocities, pressure (mpmice/).
+  if (coupling_) coupling_->after_interpolate_to_grid(t, dt, step);
   // 4. Contact on the interpolated velocities v_g.
   if (contact) exchange_momentum(ContactStage::Interpolated, t, dt);
   // 5. f_int,g = -sum V_p sigma_p grad S_gp with sigma, V at t_n (Alg. 6, eq. 1.70).
   {
     PhaseTimers::Scope timer(phase_timers(), "MPM: compute internal force");
     for (MpmMaterial& m : mats) internal_force(m);
+    if (coupling_) coupling_->add_internal_forces();  // MPMICE: the cell pressure on the particles
     boundary_forces();
   }
   // 5b. Node temperatures and their rates: conduction, thermal contact (mpm/thermal).
@@ -321,6 +324,9 @@ void MpmComponent::advance(double t, double dt, int step) {
     if (setup_.flags.artificial_damping_coeff > 0.0)  // a_g -= alpha v_g (eq. 1.65, mpm/GridDamping.h)
       for (MpmMaterial& m : mats) apply_grid_damping(m.grid, setup_.flags.artificial_damping_coeff, dt);
   }
+  // MPMICE steps 8-13: Lagrangian cell values, exchange, fluid advection; the
+  // solid's cell velocity change back to the nodes (mpmice/).
+  if (coupling_) coupling_->after_integrate_grid(dt, step);
   // 7. Contact on the integrated velocities v*_g.
   if (contact) exchange_momentum(ContactStage::Integrated, t, dt);
   // 8. Grid BCs on v*_g, then a_g = (v*_g - v_g)/dt (Alg. 8). With contact,

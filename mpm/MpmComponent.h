@@ -14,6 +14,7 @@
 #include "core/sim/Component.h"
 #include "models/solid/ConstitutiveModel.h"
 #include "mpm/GridBoundaryConditions.h"
+#include "mpm/MpmCoupling.h"
 #include "mpm/MpmFlags.h"
 #include "mpm/NodeGrid.h"
 #include "mpm/PrescribedDeformation.h"
@@ -91,6 +92,9 @@ class MpmComponent final : public Component {
 
   const std::vector<MpmMaterial>& materials() const { return setup_.materials; }
   std::vector<MpmMaterial>& materials() { return setup_.materials; }
+  const MpmSetup& setup() const { return setup_; }
+  // MPMICE: the coupled component's hooks into advance() (null: plain MPM).
+  void set_coupling(MpmCoupling* coupling) { coupling_ = coupling; }
 
  private:
   double material_stable_timestep(const MpmMaterial& m) const;
@@ -135,6 +139,7 @@ class MpmComponent final : public Component {
   double acc_strain_energy_ = 0.0;
   // Node aliases of the periodic directions (inactive without <periodic>).
   PeriodicNodes periodic_;
+  MpmCoupling* coupling_ = nullptr;  // not owned
 };
 
 // Reads the MPM parts of the deck (<MPM>, <PhysicalConstants>, <MaterialProperties><MPM>,

@@ -7,6 +7,7 @@
 #include "ice/models/IceModel.h"
 #include "models/solid/ConstitutiveModel.h"
 #include "mpm/MpmComponent.h"
+#include "mpmice/MpmIceComponent.h"
 
 namespace tephra {
 
@@ -17,12 +18,13 @@ std::unique_ptr<Component> make_component(const Deck& deck) {
   std::string type = sc.require_attribute("type");
   if (type == "mpm") return make_mpm_component(deck);
   if (type == "ice") return make_ice_component(deck);
-  sc.missing_feature("SimulationComponent type '" + type + "' (only 'mpm' and 'ice' run so far)");
+  if (type == "mpmice") return make_mpmice_component(deck);
+  sc.missing_feature("SimulationComponent type '" + type + "' (only 'mpm', 'ice' and 'mpmice' run so far)");
 }
 
 std::vector<std::string> registered_keys(const std::string& family) {
   static const std::map<std::string, std::vector<std::string> (*)()> families = {
-      {"SimulationComponent", [] { return std::vector<std::string>{"mpm", "ice"}; }},
+      {"SimulationComponent", [] { return std::vector<std::string>{"mpm", "ice", "mpmice"}; }},
       {"constitutive_model", [] { return constitutive_model_types(); }},
       {"EOS", [] { return equation_of_state_types(); }},
       {"Model", [] { return ice_model_types(); }},

@@ -125,9 +125,17 @@ TEST(MpmDeckParsing, BoundaryConditions) {
   EXPECT_EQ(b.face[3].kind, FaceVelocityBC::Kind::None);  // id='1': another material
   EXPECT_EQ(parse_grid_boundary_conditions(bcs, 1).face[3].kind, FaceVelocityBC::Kind::Velocity);
 
-  auto neumann = deck(
+  // Zero-gradient velocity (the MPMICE decks' open faces) is a free face for
+  // the MPM grid; a non-zero gradient is not supported.
+  auto neumann0 = deck(
       "<Grid><BoundaryConditions><Face side='x-'><BCType id='all' var='Neumann' label='Velocity'>"
       "<value>[0,0,0]</value></BCType></Face></BoundaryConditions></Grid>");
+  EXPECT_EQ(parse_grid_boundary_conditions(neumann0->root.require_child("Grid").child("BoundaryConditions"), 0)
+                .face[0].kind,
+            FaceVelocityBC::Kind::None);
+  auto neumann = deck(
+      "<Grid><BoundaryConditions><Face side='x-'><BCType id='all' var='Neumann' label='Velocity'>"
+      "<value>[1,0,0]</value></BCType></Face></BoundaryConditions></Grid>");
   EXPECT_THROW(parse_grid_boundary_conditions(neumann->root.require_child("Grid").child("BoundaryConditions"), 0),
                MissingFeature);
   auto bad_side = deck(

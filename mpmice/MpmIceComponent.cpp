@@ -1,0 +1,109 @@
+// The coupled MPMICE step (Vaango theory manual sec. 26.1.3) and the
+// component plumbing (time step, output, reductions, restart).
+#include "mpmice/MpmIceComponent.h"
+
+#include <algorithm>
+
+#include "core/base/PhaseTimers.h"
+
+namespace tephra {
+
+MpmIceComponent::MpmIceComponent(std::unique_ptr<MpmComponent> mpm, std::unique_ptr<IceComponent> ice, double p_ref)
+    : mpm_(std::move(mpm)), ice_(std::move(ice)), p_ref_(p_ref) {
+  mpm_->set_coupling(this);
+  ice_->set_lagrangian_state_fill([this](IceComponent&) { solid_state_to_cells(); });
+}
+
+// Particles first (seeded, stresses at F = I, projected to the nodes), then
+// the cells: the solids' cell state from those nodes, the fluids' from their
+// geom_objects, and the equilibration pressure over all materials.
+void MpmIceComponent::initialize() {
+  mpm_->initialize();
+  ice_->initialize();
+  particle_pressure_.assign(mpm_->materials().size(), {});
+  for (std::size_t s = 0; s < particle_pressure_.size(); ++s)
+    particle_pressure_[s].assign(mpm_->materials()[s].particles.size(), 0.0);
+}
+
+// The smaller of the two components' steps (Uintah's MPMICE takes the minimum).
+double MpmIceComponent::stable_timestep() const {
+  return std::min(mpm_->stable_timestep(), ice_->stable_timestep());
+}
+
+// The coupled step, in the order of sec. 26.1.3. MpmComponent::advance runs
+// the MPM step and calls back (mpm/MpmCoupling.h) where the coupled order
+// needs the cells:
+//   1.    P2G of the particles (MPM), then nodes -> cells for each solid
+//         (solid_state_to_cells)                        after_interpolate_to_grid
+//   2.    equilibration pressure over all materials (solids via SolidEos)
+//   3.    face velocities u*, face momentum exchange
+//   4.    (reactions: not yet - a mass-exchange model plugs in here)
+//   5.    pressure increment delP, p = p_eq + delP
+//   6.    face pressure p*
+//   7.    p_CC -> particles; f_int,g from sigma_p + (p_p - p_ref) I  add_internal_forces
+//         (the stress update itself follows the grid velocity, MPM step 10)
+//   8-11. Lagrangian values with the -theta grad p* force, momentum and heat
+//         exchange among all materials, specific volume   after_integrate_grid
+//   12.   advection of the fluids
+//   13.   solid du_c, dT_c -> nodes (v*_g) and particles (T_p)
+//   14.   grid BCs, G2P, x_p and v_p (MPM)
+void MpmIceComponent::advance(double t, double dt, int step) { mpm_->advance(t, dt, step); }
+
+void MpmIceComponent::after_interpolate_to_grid(double, double dt, int step) {
+  PhaseTimers& T = phase_timers();
+  { PhaseTimers::Scope s(T, "MPMICE: nodes to cells");        solid_state_to_cells(); }
+  ice_->coupled_pressure_phases(dt, step);
+  { PhaseTimers::Scope s(T, "MPMICE: pressure to particles"); pressure_to_particles(); }
+}
+
+void MpmIceComponent::after_integrate_grid(double dt, int step) {
+  ice_->coupled_transport_phases(dt, step);
+  PhaseTimers::Scope s(phase_timers(), "MPMICE: cell changes to nodes");
+  cell_changes_to_nodes_and_particles();
+}
+
+void MpmIceComponent::fill_output(const std::set<std::string>& labels, OutputFrame& frame) const {
+  std::set<std::string> mpm_labels, ice_labels;
+  const std::set<std::string> mk = mpm_->known_labels(), ik = ice_->known_labels();
+  for (const std::string& l : labels) {
+    if (mk.count(l)) mpm_labels.insert(l);
+    else if (ik.count(l)) ice_labels.insert(l);
+  }
+  ice_->fill_output(ice_labels, frame);
+  mpm_->fill_output(mpm_labels, frame);
+}
+
+// Reductions over both: TotalMass, TotalMomentum, KineticEnergy (and any
+// other label both own) are the sums of the particle and the fluid values
+// (the solids' cell copies are not counted: IceComponent skips lagrangian
+// materials); a label only one side has is that side's value.
+std::map<std::string, std::vector<double>> MpmIceComponent::reductions(const std::set<std::string>& labels) const {
+  std::map<std::string, std::vector<double>> out = mpm_->reductions(labels);
+  for (const auto& [label, v] : ice_->reductions(labels)) {
+    auto it = out.find(label);
+    if (it == out.end() || it->second.size() != v.size()) {
+      out[label] = v;
+      continue;
+    }
+    for (std::size_t i = 0; i < v.size(); ++i) it->second[i] += v[i];
+  }
+  return out;
+}
+
+std::set<std::string> MpmIceComponent::known_labels() const {
+  std::set<std::string> s = mpm_->known_labels();
+  for (const std::string& l : ice_->known_labels()) s.insert(l);
+  return s;
+}
+
+void MpmIceComponent::save_state(StateArchive& archive) const {
+  mpm_->save_state(archive);
+  ice_->save_state(archive);
+}
+
+void MpmIceComponent::load_state(const StateArchive& archive) {
+  mpm_->load_state(archive);
+  ice_->load_state(archive);
+}
+
+}  // namespace tephra

@@ -1,0 +1,63 @@
+#pragma once
+// MPMICE: MPM solids and ICE fluids on one grid (Vaango theory manual ch. 26;
+// the 14-step order of sec. 26.1.3, docs/mpmice.md). The component owns an
+// MpmComponent and an IceComponent; the MPM materials also appear in the ICE
+// material list (first, as in Uintah's numbering) as "lagrangian" materials
+// whose cell state comes from the particles every step and whose equation of
+// state is the constitutive model's pressure hook (mpmice/SolidEos.h). The
+// coupled step is advance() -> MpmComponent::advance, which calls the hooks
+// of mpm/MpmCoupling.h at the three places the order needs the grid.
+#include <memory>
+#include <vector>
+
+#include "core/sim/Component.h"
+#include "ice/IceComponent.h"
+#include "mpm/MpmComponent.h"
+#include "mpm/MpmCoupling.h"
+
+namespace tephra {
+
+struct Deck;
+
+class MpmIceComponent final : public Component, private MpmCoupling {
+ public:
+  MpmIceComponent(std::unique_ptr<MpmComponent> mpm, std::unique_ptr<IceComponent> ice, double p_ref);
+
+  std::string name() const override { return "MPMICE"; }
+  void initialize() override;
+  double stable_timestep() const override;
+  void advance(double t, double dt, int step) override;
+  void fill_output(const std::set<std::string>& labels, OutputFrame& frame) const override;
+  std::map<std::string, std::vector<double>> reductions(const std::set<std::string>& labels) const override;
+  std::set<std::string> known_labels() const override;
+  void save_state(StateArchive& archive) const override;
+  void load_state(const StateArchive& archive) override;
+
+  const MpmComponent& mpm() const { return *mpm_; }
+  const IceComponent& ice() const { return *ice_; }
+  // Particle pressure p_p - p_ref of MPM material m from the last step (step 7).
+  const std::vector<double>& particle_pressure(std::size_t m) const { return particle_pressure_[m]; }
+
+ private:
+  // MpmCoupling (called from MpmComponent::advance).
+  void after_interpolate_to_grid(double t, double dt, int step) override;
+  void add_internal_forces() override;
+  void after_integrate_grid(double dt, int step) override;
+
+  // The phases of the coupled step (MpmIceTransfers.cpp).
+  void solid_state_to_cells();                 // step 1: nodes -> cells, rho_micro from the solid EOS
+  void pressure_to_particles();                // step 7: p_CC -> nodes -> particles
+  void cell_changes_to_nodes_and_particles();  // step 13: dv_CC -> v*_g, dT_CC -> T_p
+
+  std::unique_ptr<MpmComponent> mpm_;
+  std::unique_ptr<IceComponent> ice_;
+  double p_ref_;
+  std::vector<std::vector<double>> particle_pressure_;  // per MPM material: p_p - p_ref
+};
+
+// Reads an <SimulationComponent type="mpmice"> deck: the MPM parts
+// (make_mpm_component) and the ICE parts with the MPM materials numbered first
+// (read_ice_setup). Unsupported pieces are MissingFeature naming them.
+std::unique_ptr<MpmIceComponent> make_mpmice_component(const Deck& deck);
+
+}  // namespace tephra

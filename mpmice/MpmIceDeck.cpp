@@ -1,0 +1,62 @@
+// Reading an MPMICE deck: the MPM parts as for an MPM run, the ICE parts with
+// the MPM materials first in the material list (Uintah's numbering, so that
+// <exchange_coefficients> and the boundary-condition ids count over both).
+#include <memory>
+
+#include "core/base/Errors.h"
+#include "core/deck/DeckLoader.h"
+#include "core/deck/DeckNode.h"
+#include "mpmice/MpmIceComponent.h"
+#include "mpmice/SolidEos.h"
+
+namespace tephra {
+
+std::unique_ptr<MpmIceComponent> make_mpmice_component(const Deck& deck) {
+  const DeckNode& root = deck.root;
+  std::unique_ptr<MpmComponent> mpm = make_mpm_component(deck);
+  const MpmSetup& ms = mpm->setup();
+  const DeckNode& mpm_props = root.require_child("MaterialProperties").require_child("MPM");
+  if (ms.flags.axisymmetric) root.require_child("MPM").missing_feature("<axisymmetric> in MPMICE");
+  for (int d = 0; d < 3; ++d)
+    if (ms.grid.periodic[d]) root.require_child("Grid").missing_feature("periodic grids in MPMICE");
+  if (!ms.flags.explicit_integrator) root.require_child("MPM").missing_feature("implicit MPM in MPMICE");
+
+  double p_ref = 101325.0;
+  if (const DeckNode* pc = root.child("PhysicalConstants")) p_ref = pc->get_double("reference_pressure", 101325.0);
+
+  // The MPM materials as lagrangian ICE materials: EOS from the constitutive
+  // model's hooks, c_v = <specific_heat>; no viscosity or conduction on the
+  // cells (the particles conduct heat).
+  std::vector<IceMaterialSpec> solids;
+  std::vector<const DeckNode*> mat_nodes;
+  for (const DeckNode& c : mpm_props.children)
+    if (c.name == "material") mat_nodes.push_back(&c);
+  for (std::size_t s = 0; s < ms.materials.size(); ++s) {
+    const MpmMaterial& m = ms.materials[s];
+    const DeckNode& where = s < mat_nodes.size() ? *mat_nodes[s] : mpm_props;
+    IceMaterialSpec spec;
+    spec.index = int(s);
+    spec.name = "mpm" + std::to_string(s);
+    spec.eos = std::make_unique<SolidEos>(m.model, m.density, p_ref, where);
+    spec.eos_type = spec.eos->type();
+    spec.cv = m.specific_heat;
+    spec.gamma = 1.0;
+    spec.tiny_rho = 1e-12;
+    IceSource src;
+    src.density = m.density;
+    src.temperature = m.sources.empty() ? 300.0 : m.sources[0].temperature;
+    spec.sources.push_back(src);
+    spec.lagrangian = true;
+    solids.push_back(std::move(spec));
+  }
+  IceSetup s = read_ice_setup(deck, std::move(solids));
+  if (s.implicit.enabled)
+    root.require_child("CFD").require_child("ICE").missing_feature("<ImplicitSolver> in MPMICE (explicit pressure only so far)");
+  if (!s.models.empty())
+    root.missing_feature("<Models> (mass exchange / reaction models) in MPMICE");
+  if (s.lodi.enabled) root.require_child("Grid").missing_feature("LODI boundary conditions in MPMICE");
+  auto ice = std::make_unique<IceComponent>(std::move(s));
+  return std::make_unique<MpmIceComponent>(std::move(mpm), std::move(ice), p_ref);
+}
+
+}  // namespace tephra

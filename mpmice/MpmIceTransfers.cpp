@@ -1,0 +1,207 @@
+// The grid transfers of the coupled step (docs/mpmice.md; Vaango theory
+// manual sec. 26.1.3 steps 1, 7 and 13; Uintah's MPMICE interpolateNCToCC_0,
+// interpolatePAndGradP and interpolateCCToNC for what the manual leaves open).
+//
+// Node <-> cell: a cell's value is the equal-weight (1/8) average of its 8
+// corner nodes, a node's value the 1/8 average of its 8 adjacent cells.
+// Departure: the manual doubles the weight of nodes on symmetry planes; not
+// done yet (no symmetry BCs are accepted with MPM materials in MPMICE decks
+// yet - see docs/mpmice.md).
+#include <algorithm>
+#include <cmath>
+
+#include "core/grid/Loop.h"
+#include "mpmice/MpmIceComponent.h"
+
+namespace tephra {
+
+namespace {
+
+// The node index offset of cell c's lower corner: node = c + offset.
+IntVec3 node_offset(const Grid& g, const NodeGrid& ng) {
+  IntVec3 o;
+  for (int d = 0; d < 3; ++d) o[d] = int(std::lround((g.lower[d] - ng.origin[d]) / ng.h[d]));
+  return o;
+}
+
+// The patch whose cells (with extra cells) hold c; c clamped into
+// [lo, hi) first (zero-gradient extension for nodes on the outer layer).
+template <class T>
+const T& cell_value(const Grid& g, const PatchFields<CellField<T>>& f, IntVec3 c, const IndexRange& clamp) {
+  for (int d = 0; d < 3; ++d) c[d] = std::clamp(c[d], clamp.lo[d], clamp.hi[d] - 1);
+  for (std::size_t pi = 0; pi < g.patches.size(); ++pi) {
+    const IndexRange r = g.patches[pi].cells_with_extra();
+    if ((c.array() >= r.lo.array()).all() && (c.array() < r.hi.array()).all()) return f[pi](c);
+  }
+  return f[0](c);  // unreachable for c inside the grid
+}
+
+// 1/8 sum over the 8 cells that share node n.
+template <class T>
+T node_average(const Grid& g, const PatchFields<CellField<T>>& f, const IntVec3& node_as_cell, const IndexRange& clamp) {
+  T s = f[0](g.patches[0].lo) * 0.0;
+  for (int c = 0; c < 8; ++c) {
+    const IntVec3 cell = node_as_cell - IntVec3(c & 1, (c >> 1) & 1, (c >> 2) & 1);
+    s += 0.125 * cell_value(g, f, cell, clamp);
+  }
+  return s;
+}
+
+}  // namespace
+
+// Step 1 (sec. 26.1.3, "project particle state to the grid"): the P2G node
+// fields m_g, v_g (and T_g = sum m_p T_p S_gp / m_g) of each MPM material are
+// averaged to the cell centres,
+//   M_c = 1/8 sum_8 m_g,  u_c = 1/8 sum m_g v_g / M_c,  T_c = 1/8 sum m_g T_g / M_c,
+// rho_CC = M_c / V (at least tiny_rho rho0: an empty cell keeps a trace of the
+// solid, at rest, at its initial temperature), and the solid's micro density
+// from its EOS at the cell pressure of the last step,
+//   rho_micro = rho(p_CC - p_ref, T_c),  sp_vol = 1/rho_micro
+// (Uintah's computeRhoMicroCM), the starting guess of the equilibration.
+void MpmIceComponent::solid_state_to_cells() {
+  const Grid& g = ice_->grid();
+  const double V = g.cell_volume();
+  std::vector<IceMaterialFields>& fields = ice_->mutable_fields();
+  const IceSetup& is = ice_->setup();
+  for (std::size_t s = 0; s < mpm_->materials().size(); ++s) {
+    const MpmMaterial& mm = mpm_->materials()[s];
+    const NodeGrid& ng = mm.grid;
+    const Particles& p = mm.particles;
+    const Stencils& st = mm.stencils;
+    std::vector<double> mT(ng.count(), 0.0);  // sum m_p T_p S_gp
+    for (std::size_t i = 0; i < p.size(); ++i)
+      for (int k = 0; k < st.width; ++k) {
+        const std::size_t e = i * std::size_t(st.width) + std::size_t(k);
+        mT[st.node[e]] += p.mass[i] * p.temperature[i] * st.w[e];
+      }
+    const IntVec3 off = node_offset(g, ng);
+    const IceMaterialSpec& spec = is.materials[s];
+    const double min_mass = spec.tiny_rho * mm.density * V;
+    IceMaterialFields& f = fields[s];
+    for (std::size_t pi = 0; pi < g.patches.size(); ++pi)
+      for_each_cell_serial(g.patches[pi].cells_with_extra(), [&](int i, int j, int k) {
+        const IntVec3 c(i, j, k);
+        double M = 0, MT = 0;
+        Vec3 P = Vec3::Zero();
+        for (int n = 0; n < 8; ++n) {
+          const std::size_t gi = ng.index(c + off + IntVec3(n & 1, (n >> 1) & 1, (n >> 2) & 1));
+          M += 0.125 * ng.mass[gi];
+          P += 0.125 * ng.mass[gi] * ng.velocity[gi];
+          MT += 0.125 * mT[gi];
+        }
+        double T = spec.sources[0].temperature;
+        Vec3 u = Vec3::Zero();
+        if (M > min_mass) {
+          u = P / M;
+          T = MT / M;
+        } else {
+          M = min_mass;
+        }
+        f.rho_CC[pi](c) = M / V;
+        f.vel_CC[pi](c) = u;
+        f.temp_CC[pi](c) = T;
+        f.sp_vol_CC[pi](c) = 1.0 / spec.eos->density_at(ice_->press_CC()[pi](c), T);
+      });
+  }
+}
+
+// Step 7 (Uintah's interpolatePressCCToPressNC + interpolatePAndGradP): the
+// time-advanced cell pressure p_CC to the nodes (1/8 of the 8 adjacent
+// cells) and to the particles, p_p = sum_g S_gp p_g - p_ref. The internal
+// force then uses sigma_p + p_p I (add_internal_forces): the isotropic part
+// sigma = -p I the cells already apply to the solid through -theta grad p is
+// taken out of the particle stress (eq. 26.6: div theta_r (sigma_r - sigma)).
+void MpmIceComponent::pressure_to_particles() {
+  const Grid& g = ice_->grid();
+  const IndexRange all = g.cells_with_extra();
+  particle_pressure_.resize(mpm_->materials().size());
+  for (std::size_t s = 0; s < mpm_->materials().size(); ++s) {
+    const MpmMaterial& mm = mpm_->materials()[s];
+    const NodeGrid& ng = mm.grid;
+    const IntVec3 off = node_offset(g, ng);
+    std::vector<double> pN(ng.count(), 0.0);
+    std::vector<char> done(ng.count(), 0);
+    const Stencils& st = mm.stencils;
+    std::vector<double>& pp = particle_pressure_[s];
+    pp.assign(mm.particles.size(), 0.0);
+    for (std::size_t i = 0; i < mm.particles.size(); ++i) {
+      double sum = 0;
+      for (int k = 0; k < st.width; ++k) {
+        const std::size_t e = i * std::size_t(st.width) + std::size_t(k);
+        const std::size_t gi = st.node[e];
+        if (!done[gi]) {
+          const std::size_t nx = std::size_t(ng.n[0]), ny = std::size_t(ng.n[1]);
+          const IntVec3 node(int(gi % nx), int((gi / nx) % ny), int(gi / (nx * ny)));
+          pN[gi] = node_average(g, ice_->press_CC(), node - off, all);
+          done[gi] = 1;
+        }
+        sum += st.w[e] * pN[gi];
+      }
+      pp[i] = sum - p_ref_;
+    }
+  }
+}
+
+// f_int,g -= V_p p_p grad S_gp (Uintah's computeInternalForce with ICE: the
+// stress sigma_p + p_p I).
+void MpmIceComponent::add_internal_forces() {
+  for (std::size_t s = 0; s < mpm_->materials().size(); ++s) {
+    MpmMaterial& mm = mpm_->materials()[s];
+    const Stencils& st = mm.stencils;
+    const std::vector<double>& pp = particle_pressure_[s];
+    for (std::size_t i = 0; i < mm.particles.size(); ++i) {
+      const double vp = mm.particles.volume[i] * pp[i];
+      for (int k = 0; k < st.width; ++k) {
+        const std::size_t e = i * std::size_t(st.width) + std::size_t(k);
+        mm.grid.internal_force[st.node[e]] -= vp * st.grad[e];
+      }
+    }
+  }
+}
+
+// Step 13 (sec. 26.1.3, "update nodal solid quantities"; Uintah's
+// computeLagrangianValuesMPM + interpolateCCToNC): the solid's cell velocity
+// and temperature changes of the step, from the pressure force and the
+// exchange,
+//   du_c = u_L^ME - u_c,   dT_c = T_L^ME - T_c,
+// go to the nodes as 1/8 of the 8 adjacent cells (the extra cells take the
+// value of their interior neighbour), v*_g += du_g (the acceleration du_g/dt
+// joins a_g through the grid BCs that follow), and to the particles,
+// T_p += sum_g S_gp dT_g.
+void MpmIceComponent::cell_changes_to_nodes_and_particles() {
+  const Grid& g = ice_->grid();
+  const IndexRange interior{IntVec3::Zero(), g.cells};
+  const std::vector<IceMaterialFields>& fields = ice_->fields();
+  CellVectors du(g, 0);
+  CellScalars dT(g, 0);
+  for (std::size_t s = 0; s < mpm_->materials().size(); ++s) {
+    const IceMaterialFields& f = fields[s];
+    for (std::size_t pi = 0; pi < g.patches.size(); ++pi)
+      for_each_cell_serial(g.patches[pi].cells(), [&](int i, int j, int k) {
+        du[pi](i, j, k) = ice_->lagrangian_velocity(s)[pi](i, j, k) - f.vel_CC[pi](i, j, k);
+        dT[pi](i, j, k) = ice_->lagrangian_temperature(s)[pi](i, j, k) - f.temp_CC[pi](i, j, k);
+      });
+    MpmMaterial& mm = mpm_->materials()[s];
+    NodeGrid& ng = mm.grid;
+    const IntVec3 off = node_offset(g, ng);
+    std::vector<double> dTN(ng.count(), 0.0);
+    for (int k = 0; k < ng.n[2]; ++k)
+      for (int j = 0; j < ng.n[1]; ++j)
+        for (int i = 0; i < ng.n[0]; ++i) {
+          const std::size_t gi = ng.index(i, j, k);
+          if (!(ng.mass[gi] > 0.0)) continue;
+          const IntVec3 c = IntVec3(i, j, k) - off;
+          ng.velocity_star[gi] += node_average(g, du, c, interior);
+          dTN[gi] = node_average(g, dT, c, interior);
+        }
+    Particles& p = mm.particles;
+    const Stencils& st = mm.stencils;
+    for (std::size_t i = 0; i < p.size(); ++i)
+      for (int k = 0; k < st.width; ++k) {
+        const std::size_t e = i * std::size_t(st.width) + std::size_t(k);
+        p.temperature[i] += st.w[e] * dTN[st.node[e]];
+      }
+  }
+}
+
+}  // namespace tephra

@@ -1,0 +1,188 @@
+// The coupled MPMICE step (mpmice/, docs/mpmice.md) on two decks with known
+// answers.
+//
+// Quiescent box (inputs/mpmice/quiescent_block.ups): a steel block
+// (comp_neo_hook_plastic) at rest in air at rest, T = 300 K, p = p_ref =
+// 101325 Pa, closed walls. Exact solution: nothing moves. Every term of the
+// step vanishes on it only if the coupling is consistent: the solid's cell
+// volume fraction from the particles plus the air's fills each cell at p_ref
+// (equilibration), no pressure gradient (face velocities, delP), particle
+// pressure p_p - p_ref = 0 (internal force), no exchange. Asserted for 1000
+// steps: |v| < 1e-10 m/s for particles and every material's cells, pressure
+// constant to 1e-10 relative.
+//
+// MPMICE/advect.ups (decks README A12, unchanged): steel block and air at
+// (10,10,10) m/s. Exact: the block translates rigidly, x_p(t) = x_p(0) + v t;
+// pressure stays 101325 Pa; total momentum constant. Only the translation
+// holds today (see the two advect tests below).
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "core/deck/DeckLoader.h"
+#include "core/grid/Loop.h"
+#include "mpmice/MpmIceComponent.h"
+#include "tests/support/IceRuns.h"
+#include "tests/support/TestPaths.h"
+
+namespace tephra {
+namespace {
+
+struct CoupledRun {
+  std::unique_ptr<Deck> deck;
+  std::unique_ptr<MpmIceComponent> c;
+  double time = 0;
+  int steps = 0;
+};
+
+CoupledRun make_run(const std::string& path) {
+  CoupledRun r;
+  r.deck = load_deck(path);
+  r.deck->root.finalize_parents();
+  r.c = make_mpmice_component(*r.deck);
+  r.c->initialize();
+  return r;
+}
+
+// The deck's time rule: delt_init first, then timestep_multiplier * stable
+// step, cut to land on maxTime.
+void run_to(CoupledRun& r, double end_time, int max_steps) {
+  const DeckNode& time = r.deck->root.require_child("Time");
+  const double delt_init = time.get_double("delt_init", 0.0);
+  const double mult = time.get_double("timestep_multiplier", 1.0);
+  const double delt_max = time.get_double("delt_max", 1e300);
+  while (r.time < end_time * (1 - 1e-14) && r.steps < max_steps) {
+    double dt = (r.steps == 0 && delt_init > 0) ? delt_init : mult * r.c->stable_timestep();
+    dt = std::min({dt, delt_max, end_time - r.time});
+    ++r.steps;
+    r.c->advance(r.time, dt, r.steps);
+    r.time += dt;
+  }
+}
+
+// max over cells (with extra cells) of |p - p0|/p0 and of |u - u0| over all materials.
+void cell_deviation(const MpmIceComponent& c, const Vec3& u0, double p0, double& dp, double& du,
+                    std::size_t first_material = 0) {
+  dp = du = 0;
+  const Grid& g = c.ice().grid();
+  for (std::size_t pi = 0; pi < g.patches.size(); ++pi)
+    for_each_cell_serial(g.patches[pi].cells_with_extra(), [&](int i, int j, int k) {
+      dp = std::max(dp, std::abs(c.ice().press_CC()[pi](i, j, k) / p0 - 1));
+      for (std::size_t m = first_material; m < c.ice().fields().size(); ++m)
+        du = std::max(du, (c.ice().fields()[m].vel_CC[pi](i, j, k) - u0).cwiseAbs().maxCoeff());
+    });
+}
+
+double particle_speed_deviation(const MpmIceComponent& c, const Vec3& u0) {
+  double du = 0;
+  for (const MpmMaterial& m : c.mpm().materials())
+    for (const Vec3& v : m.particles.v) du = std::max(du, (v - u0).cwiseAbs().maxCoeff());
+  return du;
+}
+
+TEST(MpmIce, QuiescentBlockInAirStaysAtRest) {
+  set_thread_count(1);
+  CoupledRun r = make_run(test::source_dir() + "/inputs/mpmice/quiescent_block.ups");
+  ASSERT_EQ(r.c->ice().fields().size(), 2u);  // MPM steel first, then air
+  double dp = 0, du = 0;
+  cell_deviation(*r.c, Vec3::Zero(), 101325.0, dp, du);
+  EXPECT_LT(dp, 1e-10) << "initial equilibration pressure is not uniform";
+  // The block does take part: its cell holds the full steel volume fraction.
+  double theta_max = 0;
+  const Grid& g = r.c->ice().grid();
+  for_each_cell_serial(g.patches[0].cells(), [&](int i, int j, int k) {
+    theta_max = std::max(theta_max, r.c->ice().fields()[0].vol_frac_CC[0](i, j, k));
+  });
+  EXPECT_GT(theta_max, 0.1);
+  run_to(r, 1.0, 1000);
+  EXPECT_EQ(r.steps, 1000);
+  cell_deviation(*r.c, Vec3::Zero(), 101325.0, dp, du);
+  EXPECT_LT(du, 1e-10);
+  EXPECT_LT(dp, 1e-10);
+  EXPECT_LT(particle_speed_deviation(*r.c, Vec3::Zero()), 1e-10);
+}
+
+// advect.ups, what holds: the block translates as v t and the particles keep
+// their mass. Measured (5^3 cells, 20 steps to t = 0.0103 s): max
+// |x_p - x_p0 - v t| = 6e-6 m, max |v_p - v| = 1.6e-3 m/s, total mass
+// (particles + air) changes by 6.7e-6 relative through the open Neumann faces.
+// The bounds below are 10-20x those figures: they guard against regressions,
+// they are NOT the exact answer - see DISABLED_AdvectDeckKeepsPressure and
+// docs/mpmice.md "What does not work".
+TEST(MpmIce, AdvectDeckTranslatesTheBlock) {
+  set_thread_count(1);
+  CoupledRun r = make_run(test::shared_dir() + "/decks/inputs/MPMICE/advect.ups");
+  const std::set<std::string> sums = {"TotalMass"};
+  auto s0 = r.c->reductions(sums);
+  const Particles p0 = r.c->mpm().materials()[0].particles;
+  run_to(r, 0.01, 1000);
+  EXPECT_GE(r.steps, 10);
+  const Vec3 u0(10, 10, 10);
+  const Particles& p = r.c->mpm().materials()[0].particles;
+  ASSERT_EQ(p.size(), 8u);
+  double dx = 0, mass0 = 0, mass1 = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    dx = std::max(dx, (p.x[i] - p0.x[i] - u0 * r.time).cwiseAbs().maxCoeff());
+    mass0 += p0.mass[i];
+    mass1 += p.mass[i];
+  }
+  EXPECT_LT(dx, 1e-4) << "block displacement error after t = " << r.time;
+  EXPECT_EQ(mass1, mass0);
+  EXPECT_LT(particle_speed_deviation(*r.c, u0), 2e-2);
+  auto s1 = r.c->reductions(sums);
+  EXPECT_NEAR(s1["TotalMass"][0], s0["TotalMass"][0], 1e-4 * s0["TotalMass"][0]);
+}
+
+// The exact answer of advect.ups (decks README A12): pressure 101325 Pa and
+// every velocity 10 m/s to round-off, total momentum constant. KNOWN DEFECT:
+// after 20 steps max |p - 101325|/101325 = 3.8e-2 and the air velocity is off
+// by 0.25 m/s (docs/mpmice.md: the projected solid volume fraction and the
+// donor-cell volume fluxes of delP/advection disagree, and K = 1e10 locks the
+// air to the solid so the mismatch compresses the air). Disabled until fixed;
+// run with --gtest_also_run_disabled_tests.
+TEST(MpmIce, DISABLED_AdvectDeckKeepsPressure) {
+  set_thread_count(1);
+  CoupledRun r = make_run(test::shared_dir() + "/decks/inputs/MPMICE/advect.ups");
+  const std::set<std::string> sums = {"TotalMomentum"};
+  auto s0 = r.c->reductions(sums);
+  run_to(r, 0.01, 1000);
+  double dp = 0, du = 0;
+  cell_deviation(*r.c, Vec3(10, 10, 10), 101325.0, dp, du, 1);
+  EXPECT_LT(dp, 1e-10);
+  EXPECT_LT(du, 1e-9);
+  auto s1 = r.c->reductions(sums);
+  for (int d = 0; d < 3; ++d) EXPECT_NEAR(s1["TotalMomentum"][d], s0["TotalMomentum"][d], 1e-12 * s0["TotalMomentum"][d]);
+}
+
+// A closed box (quiescent_block.ups with the block thrown at 5 m/s along x):
+// no face of the box lets mass through (Dirichlet u = 0: zero face velocity,
+// zero donor flux) and the particles keep their mass, so the total mass
+// (particles + air) is an exact discrete invariant: conserved to round-off
+// over 200 steps while the block and the air exchange momentum (K = 1e10).
+TEST(MpmIce, ClosedBoxConservesMassWithAMovingBlock) {
+  set_thread_count(1);
+  CoupledRun r;
+  r.deck = load_deck(test::source_dir() + "/inputs/mpmice/quiescent_block.ups");
+  DeckNode& mpm_mat = test::deck_node(r.deck->root, {"MaterialProperties", "MPM", "material", "geom_object", "velocity"});
+  mpm_mat.text = "[5.0, 0.0, 0.0]";
+  r.deck->root.finalize_parents();
+  r.c = make_mpmice_component(*r.deck);
+  r.c->initialize();
+  const std::set<std::string> sums = {"TotalMass", "TotalMomentum"};
+  auto s0 = r.c->reductions(sums);
+  run_to(r, 1.0, 200);
+  auto s1 = r.c->reductions(sums);
+  EXPECT_NEAR(s1["TotalMass"][0], s0["TotalMass"][0], 1e-13 * s0["TotalMass"][0]);
+  // The block did move (initial momentum = block mass 8900 kg/m^3 x (0.1 m)^3
+  // x 5 m/s = 44.5 kg m/s, the air at rest) and shared its momentum with the air.
+  EXPECT_NEAR(s0["TotalMomentum"][0], 44.5, 1e-9);
+  double air_speed = 0;
+  const Grid& g = r.c->ice().grid();
+  for_each_cell_serial(g.patches[0].cells(), [&](int i, int j, int k) {
+    air_speed = std::max(air_speed, std::abs(r.c->ice().fields()[1].vel_CC[0](i, j, k)[0]));
+  });
+  EXPECT_GT(air_speed, 0.1);
+}
+
+}  // namespace
+}  // namespace tephra
