@@ -12,6 +12,7 @@ class DefaultHypo final : public PlasticityEos {
   explicit DefaultHypo(double K) : K_(K) {}
   std::string type() const override { return "default_hypo"; }
   EosResult evaluate(const EosInput& in) const override { return {in.p_old + K_ * in.trace_d * in.dt, K_ / in.J}; }
+  EosResult at_volume_ratio(double J) const override { return {K_ * std::log(J), K_ / J}; }  // ∫ K dJ/J
   double bulk_modulus() const override { return K_; }
   double K_;
 };

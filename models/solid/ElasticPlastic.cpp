@@ -6,6 +6,7 @@
 #include <Eigen/LU>
 
 #include "models/ModelParameters.h"
+#include "models/plasticity/PorousReturn.h"
 #include "models/solid/Kinematics.h"
 #include "models/solid/MetalPointLoop.h"
 #include "models/solid/SubModelAssembly.h"
@@ -15,7 +16,7 @@ namespace tephra {
 namespace {
 // The fixed part of the history (history() order); optional columns follow.
 enum HistoryIndex { kEpsP = 0, kEpsPRate, kStrainRate, kPorosity, kDamage, kLocalized, kFixedCount };
-constexpr int kMaxHistory = kFixedCount + 3;
+constexpr int kMaxHistory = kFixedCount + 5;
 }  // namespace
 
 std::vector<HistoryVariable> ElasticPlastic::history() const {
@@ -31,6 +32,9 @@ std::vector<HistoryVariable> ElasticPlastic::history() const {
     h.push_back({"thermalReferenceTemperature", 1, {0.0}, "T_0 of VT eq. 18.81, set at the first update [K]"});
     h.push_back({"lastTemperature", 1, {0.0}, "temperature of the last update [K]"});
   }
+  if (k_evp_ >= 0)
+    h.push_back({"plasticVolumetricStrain", 1, {0.0}, "ln J^p = sum of tr(Delta eps^p) (porous yield only) [-]"});
+  if (k_drawn_ >= 0) h.push_back({"initialFieldsDrawn", 1, {0.0}, "1 once the Gaussian initial porosity/damage is drawn"});
   return h;
 }
 
@@ -136,14 +140,57 @@ bool ElasticPlastic::update_point(const Eigen::Matrix3d& F_old, const Eigen::Mat
   const Eigen::Matrix3d s_trial = s_n + 2.0 * mu * (de - (de.trace() / 3.0) * I);
   const double q_trial = std::sqrt(1.5 * s_trial.squaredNorm());
   Eigen::Matrix3d s = s_trial;
-  double delta = 0.0, sigma_y = 0.0, T_new = T;
+  double delta = 0.0, sigma_y = 0.0, T_new = T, H = 0.0, work = 0.0, tr_dp = 0.0;
   bool melted = false, plastic = false;
+
+  // Mechanical mean stress (VT eq. 18.81 without the thermal term): the EOS at J^e = J/J^p
+  // (J^p = 1 for isochoric J2 flow).
+  EosInput ei;
+  ei.J = k_evp_ >= 0 ? J * std::exp(-hist[k_evp_]) : J;
+  ei.p_old = p_n + 3.0 * eos_->bulk_modulus() * p_.alpha * (T_last - T0);  // the mechanical part at t_n
+  ei.dt = dt;
+  ei.trace_d = dt > 0.0 ? de.trace() / dt : 0.0;
+  const EosResult eos = eos_->evaluate(ei);
+  const double kappa_t = ei.J * eos.dp_dJ;  // tangent bulk modulus kappa = J dp/dJ
+  const double kappa = kappa_t > 0.0 ? kappa_t : eos_->bulk_modulus();
+  double p_mech = eos.p;
   if (dt > 0.0) {
     const FlowStress y0 = flow_->evaluate(st);
     melted = T > st.melt_temperature || !(y0.sigma_y > 0.0);
     if (melted) {
       // Vaango: with <do_melting> the deviator vanishes; without it the old deviator is kept.
       s = p_.do_melting ? Eigen::Matrix3d::Zero() : s_n;
+    } else if (yield_ && mu > 0.0) {
+      // Pressure-dependent yield (Gurson, Rousselier): two-invariant return (PorousReturn.h),
+      // isothermal at T; heating T_new = T + chi sigma:Delta eps^p/(rho C_p) after it.
+      PorousReturnInput pr;
+      pr.q_trial = q_trial;
+      pr.I1_trial = 3.0 * (eos.p - 3.0 * kappa * p_.alpha * (T - T0));
+      pr.n_hat = unit_deviator(s_trial);
+      pr.K = kappa;
+      pr.mu = mu;
+      pr.dt = dt;
+      pr.tolerance = std::max(p_.tolerance, 1e-11);
+      pr.state = st;
+      if (yield_at(*yield_, q_trial, pr.I1_trial, pr.n_hat, y0.sigma_y, st.porosity) > 0.0) {
+        plastic = true;
+        const PorousReturnResult r = porous_return(*yield_, *flow_, pr);
+        if (!r.converged) return false;
+        delta = r.delta_eps_p;
+        sigma_y = r.sigma_y;
+        s = r.stress - (r.I1 / 3.0) * I;
+        tr_dp = r.plastic_strain.trace();
+        work = r.stress.cwiseProduct(r.plastic_strain).sum();  // sigma : Delta eps^p = (1 - phi) sigma_y Delta eps_p
+        T_new = T + c * work;
+        hist[k_evp_] += tr_dp;
+        if (eos_->type() == "default_hypo") {
+          p_mech = r.I1 / 3.0 + 3.0 * kappa * p_.alpha * (T - T0);  // p_tr - kappa tr(Delta eps^p)
+        } else {
+          EosInput e2 = ei;
+          e2.J = J * std::exp(-hist[k_evp_]);
+          p_mech = eos_->evaluate(e2).p;
+        }
+      }
     } else if (q_trial > y0.sigma_y && mu > 0.0) {
       plastic = true;
       const Return r = plastic_return(q_trial, mu, dt, st, c);
@@ -151,23 +198,24 @@ bool ElasticPlastic::update_point(const Eigen::Matrix3d& F_old, const Eigen::Mat
       sigma_y = r.sigma_y;
       T_new = r.temperature;
       if (k_sigma_e_ >= 0) hist[k_sigma_e_] = r.sigma_e;
+      // Hardening modulus of the stability tangent: adiabatic, H = dsigma_y/deps_p + dsigma_y/dT c sigma_y.
+      PlasticState se = st;
+      se.eps_p = st.eps_p + delta;
+      se.eps_p_rate = delta / dt;
+      se.temperature = T_new;
+      se.sigma_e = r.sigma_e;
+      const FlowStress ye = flow_->evaluate(se);
+      H = ye.d_eps_p + ye.d_T * c * ye.sigma_y;
       s = s_trial * (1.0 - 3.0 * mu * delta / q_trial);  // VT 18.52 with M = sqrt(3/2) xi/|xi|
+      work = sigma_y * delta;
     }
   }
   hist[kEpsP] += delta;
   hist[kEpsPRate] = dt > 0.0 ? delta / dt : 0.0;
   hist[kStrainRate] = dt > 0.0 ? std::sqrt(2.0 / 3.0) * de.norm() / dt : 0.0;
 
-  // Mean stress (VT eq. 18.81): the EOS at J, minus the thermal pressure.
-  EosInput ei;
-  ei.J = J;
-  ei.p_old = p_n + 3.0 * eos_->bulk_modulus() * p_.alpha * (T_last - T0);  // the mechanical part at t_n
-  ei.dt = dt;
-  ei.trace_d = dt > 0.0 ? de.trace() / dt : 0.0;
-  const EosResult eos = eos_->evaluate(ei);
-  const double kappa_t = J * eos.dp_dJ;  // tangent bulk modulus kappa = J dp/dJ
-  const double kappa = kappa_t > 0.0 ? kappa_t : eos_->bulk_modulus();
-  const double sigma_m = eos.p - 3.0 * kappa * p_.alpha * (T_new - T0);
+  // Mean stress (VT eq. 18.81): the EOS part minus the thermal pressure.
+  const double sigma_m = p_mech - 3.0 * kappa * p_.alpha * (T_new - T0);
   if (k_T0_ >= 0) hist[k_Tprev_] = T_new;
 
   const Eigen::Matrix3d tau = sigma_m * I + s;
@@ -176,7 +224,7 @@ bool ElasticPlastic::update_point(const Eigen::Matrix3d& F_old, const Eigen::Mat
   out.r.wave_speed = std::sqrt((kappa + 4.0 * mu / 3.0) / rho);
   out.r.energy_density =
       J * (sigma_m * sigma_m / (2.0 * eos_->bulk_modulus()) + (mu > 0.0 ? s.squaredNorm() / (4.0 * mu) : 0.0));
-  out.plastic_work = J * sigma_y * delta;
+  out.plastic_work = J * work;
   out.heating = dt > 0.0 ? (T_new - T) / dt : 0.0;  // = chi sigma_y eps_p_dot/(rho C_p) (VT 18.20)
 
   // Porosity, damage and failure (VT ch. 12, 15, 16), after a plastic step.
@@ -184,15 +232,25 @@ bool ElasticPlastic::update_point(const Eigen::Matrix3d& F_old, const Eigen::Mat
     st.eps_p = hist[kEpsP];
     st.eps_p_rate = hist[kEpsPRate];
     st.temperature = T_new;
-    evolve_porosity_and_damage(failure_, out.r.stress, st, dt, hist[kPorosity], hist[kDamage]);
+    evolve_porosity_and_damage(failure_, out.r.stress, st, dt, hist[kPorosity], hist[kDamage], tr_dp);
   }
   if (dt > 0.0 && metal_point_failed(failure_, melted, plastic, hist[kPorosity], hist[kDamage], out.r.stress))
     hist[kLocalized] = 1.0;
+  if (plastic && metal_point_unstable(failure_, tau_n, tau, s, delta, dt, kappa, mu, H)) hist[kLocalized] = 1.0;
   return out.r.stress.allFinite() && std::isfinite(out.heating) && std::isfinite(hist[kDamage]);
 }
 
 long ElasticPlastic::update(const SolidUpdateInput& in, const SolidUpdateOutput& out) const {
-  return update_metal_points<kMaxHistory>(*this, history_count_, in, out);
+  return update_metal_points<kMaxHistory>(*this, history_count_, in, out, k_drawn_, kPorosity, kDamage);
+}
+
+std::optional<SolidEosPoint> ElasticPlastic::pressure_at_density(double rho, double density0, double) const {
+  const EosPressurePoint e = eos_pressure_at_density(*eos_, rho, density0);
+  return SolidEosPoint{e.pressure, e.dp_drho, e.c2};
+}
+
+std::optional<double> ElasticPlastic::density_at_pressure(double p_gauge, double density0, double) const {
+  return eos_density_at_pressure(*eos_, p_gauge, density0);
 }
 
 ConstitutiveModelP ElasticPlastic::create(const ModelParameters& params) {
@@ -218,18 +276,6 @@ ConstitutiveModelP ElasticPlastic::create(const ModelParameters& params) {
   if (params.get_bool("useModifiedEOS", false))
     params.missing_feature("useModifiedEOS", "elastic_plastic with useModifiedEOS = true");
 
-  const std::string yield = block_type(params, "yield_condition");
-  if (yield.empty()) params.fail("yield_condition", name + " requires <yield_condition type=\"von_mises\">");
-  if (yield != "von_mises" && yield != "vonMises") {
-    if (!find_sub_model(yield_conditions(), yield))
-      params.fail("yield_condition", "unknown yield_condition type '" + yield + "' (valid: " +
-                                         assembly::join_keys(sub_model_keys(yield_conditions())) + ")");
-    params.missing_feature("yield_condition", name + " yield_condition '" + yield +
-                                                  "' (the J2-I1 return of VT §18.7; implemented: von_mises)");
-  }
-  const std::string stab = block_type(params, "stability_check");
-  if (!stab.empty() && stab != "none")
-    params.missing_feature("stability_check", name + " stability_check '" + stab + "'");
   const std::string kin = block_type(params, "kinematic_hardening_model");
   if (!kin.empty() && kin != "none")
     params.missing_feature("kinematic_hardening_model", name + " kinematic hardening '" + kin + "'");
@@ -273,6 +319,19 @@ ConstitutiveModelP ElasticPlastic::create(const ModelParameters& params) {
     m->k_T0_ = k++;
     m->k_Tprev_ = k++;
   }
+  // Yield condition: von Mises takes the J2 return; others the two-invariant return.
+  const auto yield = sub_model(params, name, "yield_condition", yield_conditions(), "", ctx,
+                               [](const std::string& kk, const ModelParameters& q, const SubModelContext& cc) {
+                                 return create_yield_condition(kk, q, cc);
+                               });
+  if (yield->type() != "von_mises") {
+    m->yield_ = yield;
+    m->k_evp_ = k++;
+    if (m->failure_.stability && m->failure_.stability->type() != "none")
+      params.missing_feature("stability_check", name + " stability_check with yield_condition '" + yield->type() +
+                                                    "' (the check uses the J2 tangent)");
+  }
+  if (m->failure_.random_initial_fields()) m->k_drawn_ = k++;
   m->history_count_ = k;
   return m;
 }

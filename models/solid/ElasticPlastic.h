@@ -38,8 +38,14 @@
 //     stress free, as Vaango's rate form D - alpha T_dot I integrates to); the tag
 //     <initial_material_temperature> is read and handed to no law (as in Vaango).
 // MTS flow: the structure stress sigma_e is history, sigma_e = sigma_e,n + theta Dg inside the return.
-// MissingFeature: yield conditions other than von Mises (J2-I1 / Gurson), kinematic
-// hardening, stability checks other than "none", useModifiedEOS, Gaussian initial fields.
+// Stability checks (<stability_check>, VT ch. 16) after a plastic step: MetalFailure.h.
+// Yield conditions gurson / rousselier: the two-invariant backward-Euler return of
+// models/plasticity/PorousReturn.h, isothermal in the return (T_new = T + chi sigma:Delta eps^p
+// /(rho C_p) after it); porosity grows by (1 - phi) tr Delta eps^p; ln J^p is history and the
+// EOS is evaluated at J^e = J/J^p (exact on the returned surface for default_hypo; other EOS
+// are re-evaluated at the new J^e, so f = O(Delta eps_v^2) off it). Stability checks with a
+// porous yield: MissingFeature.
+// MissingFeature: kinematic hardening, useModifiedEOS.
 #include <memory>
 
 #include "models/plasticity/FlowStressModel.h"
@@ -71,6 +77,10 @@ class ElasticPlastic final : public ConstitutiveModel {
   std::vector<HistoryVariable> history() const override;
   double bulk_modulus() const override { return p_.bulk_modulus; }
   double shear_modulus() const override { return p_.shear_modulus; }
+  // MPMICE hooks from the EOS sub-model (PlasticityEos.h: gauge p̄(ρ) at J = ρ0/ρ, E = 0,
+  // default_hypo integrated to p = K ln J; the thermal term of VT 18.81 is left out).
+  std::optional<SolidEosPoint> pressure_at_density(double rho, double density0, double T) const override;
+  std::optional<double> density_at_pressure(double p_gauge, double density0, double T) const override;
 
   // The backward-Euler J2 return of one point (public for the unit tests).
   struct Return {
@@ -99,6 +109,9 @@ class ElasticPlastic final : public ConstitutiveModel {
   bool mts_ = false;          // the flow model carries sigma_e
   int k_sigma_e_ = -1;        // history index of sigma_e (MTS only)
   int k_T0_ = -1, k_Tprev_ = -1;  // thermal reference and last temperature (alpha != 0 only)
+  int k_drawn_ = -1;          // "initialFieldsDrawn" (Gaussian initial porosity/damage only)
+  int k_evp_ = -1;            // "plasticVolumetricStrain" ln J^p (porous yield only)
+  std::shared_ptr<const YieldCondition> yield_;  // nullptr: von Mises (J2 return)
   int history_count_ = 6;
 };
 

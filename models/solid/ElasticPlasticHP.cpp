@@ -8,6 +8,7 @@
 #include <Eigen/LU>
 
 #include "models/ModelParameters.h"
+#include "models/plasticity/PorousReturn.h"
 #include "models/solid/Kinematics.h"
 #include "models/solid/MetalPointLoop.h"
 #include "models/solid/SubModelAssembly.h"
@@ -16,15 +17,22 @@ namespace tephra {
 
 namespace {
 enum HistoryIndex { kEpsP = 0, kEpsPRate = 1, kPorosity = 2, kDamage = 3, kLocalized = 4, kHistoryCount = 5 };
+constexpr int kMaxHistory = kHistoryCount + 2;  // + plasticVolumetricStrain, initialFieldsDrawn
 }  // namespace
 
 std::vector<HistoryVariable> ElasticPlasticHP::history() const {
   // Vaango's ElasticPlasticHP labels (p.plasticStrain, ...).
-  return {{"plasticStrain", 1, {0.0}, "equivalent plastic strain ε_p [-]"},
-          {"plasticStrainRate", 1, {0.0}, "equivalent plastic strain rate ε̇_p = Δε_p/Δt [1/s]"},
-          {"porosity", 1, {failure_.initial_porosity}, "void volume fraction φ [-]"},
-          {"damage", 1, {failure_.initial_damage()}, "scalar damage D [-]"},
-          {"localized", 1, {0.0}, "1 once the point failed (melting, TEPLA, max stress), else 0"}};
+  std::vector<HistoryVariable> h = {
+      {"plasticStrain", 1, {0.0}, "equivalent plastic strain ε_p [-]"},
+      {"plasticStrainRate", 1, {0.0}, "equivalent plastic strain rate ε̇_p = Δε_p/Δt [1/s]"},
+      {"porosity", 1, {failure_.initial_porosity}, "void volume fraction φ [-]"},
+      {"damage", 1, {failure_.initial_damage()}, "scalar damage D [-]"},
+      {"localized", 1, {0.0}, "1 once the point failed (melting, TEPLA, max stress, stability), else 0"}};
+  if (k_evp_ >= 0)
+    h.push_back({"plasticVolumetricStrain", 1, {0.0}, "ln J^p = sum of tr(Delta eps^p) (porous yield only) [-]"});
+  if (k_drawn_ >= 0)
+    h.push_back({"initialFieldsDrawn", 1, {0.0}, "1 once the Gaussian initial porosity/damage is drawn"});
+  return h;
 }
 
 bool ElasticPlasticHP::update_point(const Eigen::Matrix3d& F_old, const Eigen::Matrix3d& F_new,
@@ -43,7 +51,7 @@ bool ElasticPlasticHP::update_point(const Eigen::Matrix3d& F_old, const Eigen::M
 
   // Volumetric part: the EOS gives the mean stress (VT ch. 6).
   EosInput ei;
-  ei.J = J;
+  ei.J = k_evp_ >= 0 ? J * std::exp(-hist[k_evp_]) : J;  // elastic volume ratio J^e = J/J^p
   ei.p_old = p_n;
   ei.dt = dt;
   ei.trace_d = dt > 0.0 ? de.trace() / dt : 0.0;
@@ -65,10 +73,37 @@ bool ElasticPlasticHP::update_point(const Eigen::Matrix3d& F_old, const Eigen::M
   const Eigen::Matrix3d s_trial = s_n + 2.0 * mu * (de - (de.trace() / 3.0) * I);
   const double q_trial = std::sqrt(1.5 * s_trial.squaredNorm());
   Eigen::Matrix3d s = s_trial;
-  double delta = 0.0, sigma_y = 0.0;
+  double delta = 0.0, sigma_y = 0.0, H = 0.0, mean = eos.p, work = 0.0, tr_dp = 0.0;
   const bool melted = p_.do_melting && T >= st.melt_temperature;
   if (melted) {
     s.setZero();
+  } else if (dt > 0.0 && mu > 0.0 && yield_) {
+    // Pressure-dependent yield (Gurson, Rousselier): two-invariant return (PorousReturn.h)
+    // with the trial mean stress of the EOS and its tangent bulk modulus.
+    const double kt = ei.J * eos.dp_dJ;
+    PorousReturnInput pr;
+    pr.q_trial = q_trial;
+    pr.I1_trial = 3.0 * eos.p;
+    pr.n_hat = unit_deviator(s_trial);
+    pr.K = kt > 0.0 ? kt : eos_->bulk_modulus();
+    pr.mu = mu;
+    pr.dt = dt;
+    pr.tolerance = std::max(p_.tolerance, 1e-11);
+    pr.state = st;
+    const FlowStress y0 = flow_->evaluate(st);
+    if (yield_at(*yield_, q_trial, pr.I1_trial, pr.n_hat, y0.sigma_y, st.porosity) > 0.0) {
+      const PorousReturnResult r = porous_return(*yield_, *flow_, pr);
+      if (!r.converged) return false;
+      delta = r.delta_eps_p;
+      sigma_y = r.sigma_y;
+      s = r.stress - (r.I1 / 3.0) * I;
+      tr_dp = r.plastic_strain.trace();
+      work = r.stress.cwiseProduct(r.plastic_strain).sum();  // σ : Δε^p = (1 - φ) σ_y Δε_p
+      hist[k_evp_] += tr_dp;
+      // Mean stress: exact for the rate form (p_tr - K tr Δε^p); others at the new J^e.
+      ei.J = J * std::exp(-hist[k_evp_]);
+      mean = eos_->type() == "default_hypo" ? r.I1 / 3.0 : eos_->evaluate(ei).p;
+    }
   } else if (dt > 0.0 && mu > 0.0) {
     const FlowStress y0 = flow_->evaluate(st);
     if (q_trial > y0.sigma_y) {
@@ -82,6 +117,7 @@ bool ElasticPlasticHP::update_point(const Eigen::Matrix3d& F_old, const Eigen::M
         const FlowStress y = flow_->evaluate(st);
         const double g = q_trial - 3.0 * mu * x - y.sigma_y;
         sigma_y = y.sigma_y;
+        H = y.d_eps_p;  // hardening modulus of the stability tangent (isothermal return)
         if (std::abs(g) <= tol) break;
         (g > 0.0 ? lo : hi) = x;
         const double dg = -3.0 * mu - y.d_eps_p - y.d_eps_p_rate / dt;
@@ -91,41 +127,52 @@ bool ElasticPlasticHP::update_point(const Eigen::Matrix3d& F_old, const Eigen::M
         x = next;
       }
       delta = x;
+      work = sigma_y * delta;
       s = s_trial * (1.0 - 3.0 * mu * delta / q_trial);
     }
   }
   hist[kEpsP] += delta;
   hist[kEpsPRate] = dt > 0.0 ? delta / dt : 0.0;
 
-  const Eigen::Matrix3d tau = eos.p * I + s;
+  const Eigen::Matrix3d tau = mean * I + s;
   out.r.stress = b.R * tau * b.R.transpose();
   out.r.stress = (0.5 * (out.r.stress + out.r.stress.transpose())).eval();  // eval: no aliasing
   const double rho = density0 / J;
   const double kappa_t = J * eos.dp_dJ;  // tangent bulk modulus (VT eq. 17.164)
   const double kappa = kappa_t > 0.0 ? kappa_t : eos_->bulk_modulus();
   out.r.wave_speed = std::sqrt((kappa + 4.0 * mu / 3.0) / rho);
-  out.r.energy_density = J * (eos.p * eos.p / (2.0 * eos_->bulk_modulus()) + (mu > 0.0 ? s.squaredNorm() / (4.0 * mu) : 0.0));
-  out.plastic_work = J * sigma_y * delta;
+  out.r.energy_density = J * (mean * mean / (2.0 * eos_->bulk_modulus()) + (mu > 0.0 ? s.squaredNorm() / (4.0 * mu) : 0.0));
+  out.plastic_work = J * work;
   out.heating = 0.0;
   if (!p_.isothermal && delta > 0.0) {
     st.eps_p = hist[kEpsP];
     st.eps_p_rate = hist[kEpsPRate];
     const double cp = cp_->specific_heat(st);
-    out.heating = p_.taylor_quinney * sigma_y * hist[kEpsPRate] / (rho * cp);  // VT 17.27, h^T
+    out.heating = p_.taylor_quinney * work / dt / (rho * cp);  // VT 17.27, h^T (J2: σ_y ε̇_p)
   }
   // Porosity, damage (uncoupled, after the return: Algorithm 1) and failure (VT ch. 12, 15, 16).
   if (delta > 0.0) {
     st.eps_p = hist[kEpsP];
     st.eps_p_rate = hist[kEpsPRate];
-    evolve_porosity_and_damage(failure_, out.r.stress, st, dt, hist[kPorosity], hist[kDamage]);
+    evolve_porosity_and_damage(failure_, out.r.stress, st, dt, hist[kPorosity], hist[kDamage], tr_dp);
   }
   if (dt > 0.0 && metal_point_failed(failure_, melted, delta > 0.0, hist[kPorosity], hist[kDamage], out.r.stress))
     hist[kLocalized] = 1.0;
+  if (delta > 0.0 && metal_point_unstable(failure_, tau_n, tau, s, delta, dt, kappa, mu, H)) hist[kLocalized] = 1.0;
   return out.r.stress.allFinite() && std::isfinite(out.heating) && std::isfinite(hist[kDamage]);
 }
 
 long ElasticPlasticHP::update(const SolidUpdateInput& in, const SolidUpdateOutput& out) const {
-  return update_metal_points<kHistoryCount>(*this, kHistoryCount, in, out);
+  return update_metal_points<kMaxHistory>(*this, history_count_, in, out, k_drawn_, kPorosity, kDamage);
+}
+
+std::optional<SolidEosPoint> ElasticPlasticHP::pressure_at_density(double rho, double density0, double) const {
+  const EosPressurePoint e = eos_pressure_at_density(*eos_, rho, density0);
+  return SolidEosPoint{e.pressure, e.dp_drho, e.c2};
+}
+
+std::optional<double> ElasticPlasticHP::density_at_pressure(double p_gauge, double density0, double) const {
+  return eos_density_at_pressure(*eos_, p_gauge, density0);
 }
 
 ConstitutiveModelP ElasticPlasticHP::create(const ModelParameters& params) {
@@ -144,13 +191,6 @@ ConstitutiveModelP ElasticPlasticHP::create(const ModelParameters& params) {
   params.get_double("initial_material_temperature", 0.0);  // Vaango: reference of the thermal strain (alpha = 0 here)
   if (params.get_double("coeff_thermal_expansion", 0.0) != 0.0)
     params.missing_feature("coeff_thermal_expansion", "elastic_plastic_hp thermal expansion strain (alpha != 0)");
-  const std::string yield = assembly::block_type(params, "yield_condition");
-  if (yield.empty()) params.fail("yield_condition", "elastic_plastic_hp requires <yield_condition type=\"von_mises\">");
-  if (yield != "von_mises" && yield != "vonMises")
-    params.missing_feature("yield_condition", "elastic_plastic_hp yield_condition '" + yield + "' (implemented: von_mises)");
-  const std::string stab = assembly::block_type(params, "stability_check");
-  if (!stab.empty() && stab != "none")
-    params.missing_feature("stability_check", "elastic_plastic_hp stability_check '" + stab + "'");
   const std::string kin = assembly::block_type(params, "kinematic_hardening_model");
   if (!kin.empty() && kin != "none")
     params.missing_feature("kinematic_hardening_model", "elastic_plastic_hp kinematic hardening '" + kin + "'");
@@ -186,6 +226,21 @@ ConstitutiveModelP ElasticPlasticHP::create(const ModelParameters& params) {
                        [](const std::string& k, const ModelParameters& q, const SubModelContext& c) {
                          return create_flow_stress_model(k, q, c);
                        });
+  // Yield condition: von Mises takes the radial return; others the two-invariant return.
+  const auto yield = assembly::sub_model(params, "elastic_plastic_hp", "yield_condition", yield_conditions(), "", ctx,
+                                         [](const std::string& k, const ModelParameters& q, const SubModelContext& c) {
+                                           return create_yield_condition(k, q, c);
+                                         });
+  int k = kHistoryCount;
+  if (yield->type() != "von_mises") {
+    m->yield_ = yield;
+    m->k_evp_ = k++;
+    if (m->failure_.stability && m->failure_.stability->type() != "none")
+      params.missing_feature("stability_check", "elastic_plastic_hp stability_check with yield_condition '" +
+                                                    yield->type() + "' (the check uses the J2 tangent)");
+  }
+  if (m->failure_.random_initial_fields()) m->k_drawn_ = k++;
+  m->history_count_ = k;
   if (m->flow_->type() == "mechanical_threshold_stress")
     params.missing_feature("flow_model", "elastic_plastic_hp with the MTS evolving structure stress sigma_e");
   return m;

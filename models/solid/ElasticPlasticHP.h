@@ -27,9 +27,12 @@
 // Porosity, damage and the failure flag after the return (uncoupled, as Algorithm 1
 // says; models/solid/MetalFailure.h, Vaango's defaults: evolve_porosity and
 // evolve_damage true, TEPLA and max-stress checks on).
-// MissingFeature: yield conditions other than von_mises, kinematic hardening,
-// stability checks other than "none", coeff_thermal_expansion != 0, stochastic
-// initial porosity/damage, deviatoric_stress_model other than hypoElastic.
+// Stability checks (<stability_check>, VT ch. 16) after a plastic step: MetalFailure.h.
+// Yield conditions gurson / rousselier: the two-invariant backward-Euler return of
+// models/plasticity/PorousReturn.h (isothermal in the return, heating χ σ:Δε^p/(ρ C_p Δt)
+// after it; porosity grows by (1 - φ) tr Δε^p); the plastic volume ln J^p is history and the
+// EOS is evaluated at J^e = J/J^p. Stability checks with a porous yield: MissingFeature.
+// MissingFeature: kinematic hardening, coeff_thermal_expansion != 0, deviatoric_stress_model other than hypoElastic.
 #include <memory>
 
 #include "models/plasticity/FlowStressModel.h"
@@ -58,6 +61,10 @@ class ElasticPlasticHP final : public ConstitutiveModel {
   std::vector<HistoryVariable> history() const override;
   double bulk_modulus() const override { return p_.bulk_modulus; }
   double shear_modulus() const override { return p_.shear_modulus; }
+  // MPMICE hooks from the EOS sub-model (PlasticityEos.h: gauge p̄(ρ) at J = ρ0/ρ, E = 0,
+  // default_hypo integrated to p = K ln J; the thermal term of VT 18.81 is left out).
+  std::optional<SolidEosPoint> pressure_at_density(double rho, double density0, double T) const override;
+  std::optional<double> density_at_pressure(double p_gauge, double density0, double T) const override;
 
   // The point update (what update() does for one point; unit tests call it).
   // hist = {ε_p, ε̇_p, φ, D, localized}, read at t_n and overwritten with t_{n+1}.
@@ -72,6 +79,10 @@ class ElasticPlasticHP final : public ConstitutiveModel {
   std::shared_ptr<const FlowStressModel> flow_;
   std::shared_ptr<const MeltingTemperatureModel> melt_;
   std::shared_ptr<const SpecificHeatModel> cp_;
+  std::shared_ptr<const YieldCondition> yield_;  // nullptr: von Mises (radial return)
+  int k_evp_ = -1;    // history "plasticVolumetricStrain" (porous yield only)
+  int k_drawn_ = -1;  // history "initialFieldsDrawn" (Gaussian initial fields only)
+  int history_count_ = 5;
 };
 
 }  // namespace tephra

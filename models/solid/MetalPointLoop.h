@@ -6,17 +6,25 @@
 #include <cstddef>
 
 #include "models/solid/ConstitutiveModel.h"
+#include "models/solid/MetalFailure.h"
 #include "models/solid/PointLoop.h"
 
 namespace tephra {
 
 // MaxHistory: the largest history count of the model (the local array size);
-// nh <= MaxHistory columns are used.
+// nh <= MaxHistory columns are used. Random initial fields (MetalFailure.h):
+// when k_drawn >= 0, a point whose column k_drawn is 0 gets its Gaussian porosity
+// (column k_phi) and damage (column k_D) drawn from its index i, and the flag is set.
 template <int MaxHistory, class Model>
-long update_metal_points(const Model& model, int nh, const SolidUpdateInput& in, const SolidUpdateOutput& out) {
+long update_metal_points(const Model& model, int nh, const SolidUpdateInput& in, const SolidUpdateOutput& out,
+                         int k_drawn = -1, int k_phi = -1, int k_D = -1) {
   return for_each_point(in.F_new.size(), [&](std::size_t i) {
     double hist[MaxHistory];
     for (int k = 0; k < nh; ++k) hist[k] = out.history[k][i];
+    if (k_drawn >= 0 && hist[k_drawn] == 0.0) {
+      draw_initial_fields(model.failure_, i, hist[k_phi], hist[k_D]);
+      hist[k_drawn] = 1.0;
+    }
     typename Model::PointOut po;
     if (!model.update_point(in.F_old[i], in.F_new[i], in.stress_old[i], in.temperature[i], in.dt, in.density0, hist,
                             po))

@@ -333,15 +333,16 @@ bool is_missing_feature(const MapModelParameters& p) {
 }
 
 TEST(ElasticPlastic, UnimplementedOptionsAreMissingFeaturesAndBadInputFails) {
-  auto g = linear_parameters(0);
-  g.add_block("yield_condition", "gurson");
+  auto g = linear_parameters(0);  // a porous yield with a (J2-tangent) stability check
+  g.add_block("yield_condition", "gurson", {{"q1", 1.5}, {"q2", 1.0}, {"q3", 2.25}, {"k", 4.0}, {"f_c", 0.05}});
+  g.add_block("stability_check", "drucker");
   EXPECT_TRUE(is_missing_feature(g));
   auto k = linear_parameters(0);
   k.add_block("kinematic_hardening_model", "prager");
   EXPECT_TRUE(is_missing_feature(k));
   auto st = linear_parameters(0);
-  st.add_block("stability_check", "acoustic");
-  EXPECT_TRUE(is_missing_feature(st));
+  st.add_block("stability_check", "no_such_check");
+  EXPECT_THROW(create_constitutive_model("elastic_plastic", st), std::invalid_argument);
   auto me = linear_parameters(0);
   me.values["useModifiedEOS"] = 1.0;
   EXPECT_TRUE(is_missing_feature(me));

@@ -1,0 +1,128 @@
+// Stability checks (VT ch. 16; models/plasticity/StabilityCheck.h): the corrected
+// Becker quadratic on an elastic tangent, the acoustic-tensor determinant of the
+// J2 tangent against a hand computation, and the checks driving the failure flag
+// of elastic_plastic and elastic_plastic_hp (softening flagged, hardening not).
+#include <cmath>
+#include <stdexcept>
+
+#include <Eigen/Geometry>
+#include <gtest/gtest.h>
+
+#include "models/plasticity/StabilityCheck.h"
+#include "models/solid/ConstitutiveModel.h"
+#include "tests/support/SolidModelDriver.h"
+
+namespace tephra {
+namespace {
+
+using test::MapModelParameters;
+
+constexpr double kLambda = 50e9, kMu = 30e9;  // an isotropic tangent [Pa]
+const double kK = kLambda + 2.0 * kMu / 3.0;
+
+// Inventory oracle 14: for isotropic elasticity the corrected quadratic is
+// mu (lambda + 2 mu) (beta + 1)^2: a1 = a3 = mu(lambda+2mu), a2 = 2 mu(lambda+2mu); beta = -1, stable.
+TEST(StabilityCheck, BeckerQuadraticOfIsotropicElasticityIsAPerfectSquare) {
+  const BeckerQuadratic q = becker_quadratic(isotropic_tangent(kLambda, kMu));
+  const double m = kMu * (kLambda + 2 * kMu);
+  EXPECT_NEAR(q.a1 / m, 1.0, 1e-14);
+  EXPECT_NEAR(q.a2 / m, 2.0, 1e-14);
+  EXPECT_NEAR(q.a3 / m, 1.0, 1e-14);
+  EXPECT_FALSE(becker_unstable(q));
+  // Root placement: (beta-1)(beta-4) has two positive roots (four real n3/n1): unstable;
+  // (beta+1)(beta-4) one negative root: two real n3/n1, stable by (16.41).
+  EXPECT_TRUE(becker_unstable({1.0, -5.0, 4.0}));
+  EXPECT_FALSE(becker_unstable({1.0, -3.0, -4.0}));
+  EXPECT_FALSE(becker_unstable({1.0, 1.0, 1.0}));  // complex roots
+}
+
+// Elastic acoustic tensor A(n) = mu I + (lambda + mu) n n: det = mu^2 (lambda + 2 mu) for every unit n.
+TEST(StabilityCheck, AcousticDeterminantOfIsotropicElasticity) {
+  const Tangent4 C = isotropic_tangent(kLambda, kMu);
+  const double expect = kMu * kMu * (kLambda + 2 * kMu);
+  const Eigen::Vector3d n = Eigen::Vector3d(1.0, -2.0, 0.5).normalized();
+  EXPECT_NEAR(acoustic_tensor(C, n).determinant() / expect, 1.0, 1e-13);
+  EXPECT_NEAR(min_acoustic_determinant(C) / expect, 1.0, 1e-12);
+  // Rotation leaves an isotropic tensor unchanged.
+  const Eigen::Matrix3d Q = Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix();
+  const Tangent4 R = C.rotated(Q);
+  for (int k = 0; k < 81; ++k) EXPECT_NEAR(R.c[k], C.c[k], 1e-4);  // |C| ~ 1e11: 1e-15 relative
+}
+
+// J2 tangent C^ep = C^e - c Nh Nh, c = 6 mu^2/(3 mu + H), with Nh = diag(1, 0, -1)/sqrt(2)
+// (deviator of plane-strain shear in the sigma1-sigma3 plane). Hand computation for
+// n = (1, 0, 1)/sqrt(2): a = Nh n = (1, 0, -1)/2, |a|^2 = 1/2, n.a = 0, so by the
+// matrix determinant lemma with A^e^{-1} = (I - (lambda+mu)/(lambda+2mu) n n)/mu,
+//   det A = mu^2 (lambda + 2 mu) (1 - c |a|^2/mu) = mu^2 (lambda + 2 mu) H/(3 mu + H).
+TEST(StabilityCheck, AcousticDeterminantOfTheJ2TangentAgainstTheHandComputation) {
+  Eigen::Matrix3d Nh = Eigen::Matrix3d::Zero();
+  Nh(0, 0) = 1.0 / std::sqrt(2.0);
+  Nh(2, 2) = -1.0 / std::sqrt(2.0);
+  const Eigen::Vector3d n = Eigen::Vector3d(1, 0, 1).normalized();
+  Eigen::Matrix3d stress = Eigen::Matrix3d::Zero();
+  stress(0, 0) = 1e8;
+  stress(2, 2) = -1e8;
+  for (const double H : {-0.2 * kMu, -0.01 * kMu, 0.01 * kMu, 0.5 * kMu}) {
+    const Tangent4 C = j2_elastoplastic_tangent(kK, kMu, H, Nh);
+    const double hand = kMu * kMu * (kLambda + 2 * kMu) * H / (3 * kMu + H);
+    EXPECT_NEAR(acoustic_tensor(C, n).determinant() / hand, 1.0, 1e-10) << "H " << H;
+    const double dmin = min_acoustic_determinant(C);
+    EXPECT_LE(dmin, hand * (1 + 1e-12) + 1e-6 * std::abs(hand)) << "H " << H;  // the search finds <= the sample
+    StabilityInput in;
+    in.stress = stress;
+    in.tangent = C;
+    in.plastic_strain_rate = Nh;                    // d^p along Nh
+    in.stress_rate = C.contract(Nh);                // sigma_dot = C^ep : d with d = Nh
+    // sigma_dot : d^p = 2 mu H/(3 mu + H) (Nh:Nh = 1): the sign of H.
+    EXPECT_NEAR(in.stress_rate.cwiseProduct(Nh).sum(), 2 * kMu * H / (3 * kMu + H), 1e-6 * kMu);
+    const bool soft = H < 0;
+    for (const char* key : {"drucker", "acoustic", "becker", "drucker_becker"}) {
+      const auto chk = create_stability_check(key, MapModelParameters{});
+      ASSERT_TRUE(chk);
+      EXPECT_EQ(chk->unstable(in), soft) << key << " H " << H;
+    }
+    EXPECT_FALSE(create_stability_check("none", MapModelParameters{})->unstable(in));
+  }
+  EXPECT_EQ(create_stability_check("no_such_check", MapModelParameters{}), nullptr);
+}
+
+// Through the composed models: isochoric plane strain F = diag(e^e, 1, e^-e) with
+// linear hardening sigma_y = s0 + H eps_p; softening (H < 0) is flagged once plastic,
+// hardening is not (the max-stress and TEPLA tests are switched off).
+MapModelParameters metal(const std::string& type, double H, const std::string& check) {
+  MapModelParameters p({{"bulk_modulus", kK}, {"shear_modulus", kMu}, {"isothermal", 1.0},
+                        {"check_max_stress_failure", 0.0}, {"check_TEPLA_failure_criterion", 0.0}});
+  if (type == "elastic_plastic") p.values["coeff_thermal_expansion"] = 0.0;
+  p.add_block("yield_condition", "von_mises");
+  p.add_block("flow_model", "linear", {{"sigma_0", 2e8}, {"K", H}});
+  p.add_block("stability_check", check);
+  p.enclosing = {{"melt_temp", 1800.0}, {"specific_heat", 450.0}, {"density", 7830.0}};
+  return p;
+}
+
+TEST(StabilityCheck, SofteningFlagsThePointHardeningDoesNot) {
+  for (const char* type : {"elastic_plastic", "elastic_plastic_hp"})
+    for (const char* check : {"none", "drucker", "acoustic", "becker", "drucker_becker"})
+      for (const double H : {-0.1 * kMu, 0.1 * kMu}) {
+        const auto m = create_constitutive_model(type, metal(type, H, check));
+        ASSERT_TRUE(m) << type;
+        const int localized = int(m->history().size()) - 1;
+        ASSERT_EQ(m->history()[localized].name, "localized");
+        test::PointState s(*m);
+        // Yield at 2 mu e sqrt(3) = s0 -> e ~ 1.9e-3; drive to e = 4e-3.
+        int first_flag = -1;
+        for (int k = 1; k <= 40; ++k) {
+          Eigen::Matrix3d F = Eigen::Matrix3d::Identity();
+          F(0, 0) = std::exp(1e-4 * k);
+          F(2, 2) = std::exp(-1e-4 * k);
+          ASSERT_EQ(test::step_point(*m, 7830.0, s, F, 1e-6), -1);
+          if (first_flag < 0 && s.history[localized][0] == 1.0) first_flag = k;
+        }
+        const bool expect = H < 0 && std::string(check) != "none";
+        EXPECT_EQ(first_flag >= 0, expect) << type << " " << check << " H " << H;
+        if (expect) EXPECT_GE(first_flag, 20) << "flagged before yield";  // elastic while 2 sqrt(3) mu e < s0 (k <= 19)
+      }
+}
+
+}  // namespace
+}  // namespace tephra
