@@ -86,6 +86,22 @@ inline const std::map<std::string, std::map<std::string, double>>& sample_solid_
                        {"G1", 0.6e9}, {"G2", 0.6e9}, {"G3", 0.6e9}, {"G4", 0.6e9}, {"G5", 0.6e9},
                        {"RTau1", 0.0}, {"RTau2", 1e-6}, {"RTau3", 1e-6}, {"RTau4", 1e-5}, {"RTau5", 1e-5},
                        {"Beta", 1.5e-4}, {"Gamma", 1.0}, {"DCp_DTemperature", 3.30773}}},
+      // ---- chapter-3 special materials (solid-models). Air-like gas (K = gamma p_ref).
+      {"ideal_gas", {{"gamma", 1.4}, {"specific_heat", 716.0}, {"reference_pressure", 101325.0}}},
+      // Tait-like water (K = gamma kappa = 2.2 GPa); no viscosity: the contracts see the EOS only.
+      {"water", {{"bulk_modulus", 2.2e9 / 7.15}, {"gamma", 7.15}, {"viscosity", 0.0}}},
+      {"murnaghanMPM", {{"K", 8.0e9}, {"Kprime", 4.0}, {"pressure", 101325.0}, {"rho0", 7800.0}, {"viscosity", 0.0}}},
+      // ANFO (Souers' JWL++ constants of inputs/ICE/EOSData); ignition at 0.2 GPa with a fast
+      // rate and coarse burn substeps so the contracts' paths burn (f is a scalar of J and p: objective).
+      {"jwlpp_mpm", {{"ignition_pressure", 2.0e8}, {"viscosity", 0.0}, {"murnaghan_K", 3.9e-10}, {"murnaghan_n", 7.4},
+                     {"jwl_A", 2.9867e11}, {"jwl_B", 4.11706e9}, {"jwl_C", 7.206147e8}, {"jwl_R1", 4.95},
+                     {"jwl_R2", 1.15}, {"jwl_om", 0.35}, {"reaction_G", 1e-9}, {"reaction_b", 1.0},
+                     {"max_burn_timestep_size", 1e-2}}},
+      // K = K_e + K_ve = 8 GPa, G = G_e + G_ve = 3 GPa; slow relaxation (tau >= 1e5 s) so the
+      // small-strain contract sees the instantaneous moduli.
+      {"mw_visco_elastic", {{"e_shear_modulus", 2.0e9}, {"e_bulk_modulus", 6.0e9}, {"ve_shear_modulus", 1.0e9},
+                            {"ve_bulk_modulus", 2.0e9}, {"ve_volumetric_viscosity", 6.0e14},
+                            {"ve_deviatoric_viscosity", 2.0e14}}},
   };
   return table;
 }
@@ -100,6 +116,14 @@ inline void add_sample_blocks(const std::string& type, MapModelParameters& p) {
   p.add_block("flow_model", "linear", {{"sigma_0", 3.0e7}, {"K", 1.0e8}});
   p.enclosing = {{"melt_temp", 1356.0}, {"specific_heat", 414.0}, {"density", 8930.0}};
 }
+
+// Contract exceptions of special materials (each with its reason, VT ch. 3):
+//  tensionless: sigma = 0 for J >= 1 (ideal_gas, VT eq. 3.3-3.4): the small-strain
+//    limit is checked on a compressive path;
+//  thermal hooks: the MPMICE hooks are a thermal EOS p(rho, T) (ideal_gas: (gamma-1) rho c_v T),
+//    not the mechanical p(J): no p(rho0) = 0 / dp/drho = K/rho0 reference checks.
+inline bool sample_is_tensionless(const std::string& type) { return type == "ideal_gas"; }
+inline bool sample_has_thermal_hooks(const std::string& type) { return type == "ideal_gas"; }
 
 inline ConstitutiveModelP make_sample_model(const std::string& type) {
   MapModelParameters p(sample_solid_parameters().at(type));
