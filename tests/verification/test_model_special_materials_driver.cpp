@@ -13,6 +13,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "core/base/Errors.h"
 #include "core/grid/Loop.h"
 #include "tests/support/PrescribedDriver.h"
 
@@ -75,6 +76,38 @@ TEST(SpecialMaterialsDriver, WaterViscousStressIsNewtonian) {
   EXPECT_NEAR(s(1, 1), s(2, 2), 1e-9 * std::abs(s(1, 1)));
   // mean stress still -p(J): the viscous part is trace-free.
   EXPECT_NEAR(s.trace() / 3, -3e8 * (std::pow(kLambda, -7.15) - 1), 1e-9 * 3e8);
+}
+
+TEST(SpecialMaterialsDriver, DeckErrorsNameTheElement) {
+  set_thread_count(1);
+  // The old Uintah name <gamma> (inputs/MPM/MaterialData/MurnaghanEOSANFO.xml) instead of <Kprime>:
+  // the required <Kprime> is missing -> DeckError at the <constitutive_model> element.
+  const std::string old_names =
+      "<constitutive_model type=\"murnaghanMPM\"><K>2.56e9</K><gamma>7.4</gamma>"
+      "<pressure>101325</pressure><rho0>1000</rho0><viscosity>0</viscosity></constitutive_model>";
+  try {
+    test::drive_prescribed(old_names, uniaxial());
+    ADD_FAILURE() << "no DeckError";
+  } catch (const DeckError& e) {
+    std::printf("DeckError: %s\n", e.what());
+    EXPECT_NE(std::string(e.what()).find("Kprime"), std::string::npos);
+    EXPECT_GT(e.where().line, 0);
+  }
+  // rho0 different from the material <density>.
+  EXPECT_THROW(test::drive_prescribed("<constitutive_model type=\"murnaghanMPM\"><K>2.56e9</K><Kprime>7.4</Kprime>"
+                                      "<pressure>101325</pressure><rho0>1160</rho0><viscosity>0</viscosity>"
+                                      "</constitutive_model>",
+                                      uniaxial(), {.density = 1000.0}),
+               DeckError);
+  // A valid deck asking for an unimplemented option: MissingFeature (exit 3).
+  EXPECT_THROW(test::drive_prescribed("<constitutive_model type=\"jwlpp_mpm\"><ignition_pressure>1e12</ignition_pressure>"
+                                      "<viscosity>0</viscosity><murnaghan_K>3.9e-10</murnaghan_K><murnaghan_n>7.4</murnaghan_n>"
+                                      "<jwl_A>2.9867e11</jwl_A><jwl_B>4.11706e9</jwl_B><jwl_C>7.206147e8</jwl_C>"
+                                      "<jwl_R1>4.95</jwl_R1><jwl_R2>1.15</jwl_R2><jwl_om>0.35</jwl_om>"
+                                      "<reaction_G>3.5083e-7</reaction_G><reaction_b>1.3</reaction_b>"
+                                      "<useInitialStress>true</useInitialStress></constitutive_model>",
+                                      uniaxial()),
+               MissingFeature);
 }
 
 }  // namespace
