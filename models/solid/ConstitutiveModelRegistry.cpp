@@ -19,6 +19,7 @@
 #include "models/solid/JwlppMPM.h"
 #include "models/solid/MurnaghanMPM.h"
 #include "models/solid/MwViscoElastic.h"
+#include "models/solid/TransIsoHyper.h"
 #include "models/solid/Water.h"
 
 namespace tephra {
@@ -44,6 +45,7 @@ const std::map<std::string, Creator>& creators() {
       {"jwlpp_mpm", &JwlppMPM::create},
       {"murnaghanMPM", &MurnaghanMPM::create},
       {"mw_visco_elastic", &MwViscoElastic::create},
+      {"trans_iso_hyper", &TransIsoHyper::create},
       {"water", &Water::create},
   };
   return table;

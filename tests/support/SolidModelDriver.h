@@ -55,6 +55,11 @@ class MapModelParameters final : public ModelParameters {
   double enclosing_double(const std::string& n, double f) const override {
     return enclosing.count(n) ? enclosing.at(n) : f;
   }
+  // Text values (vectors such as "[1, 0, 0]").
+  std::map<std::string, std::string> strings;
+  std::string get_string(const std::string& n, const std::string& f) const override {
+    return strings.count(n) ? strings.at(n) : f;
+  }
 };
 
 // Parameters of every registered model for the contract tests (a new model
@@ -102,6 +107,12 @@ inline const std::map<std::string, std::map<std::string, double>>& sample_solid_
       {"mw_visco_elastic", {{"e_shear_modulus", 2.0e9}, {"e_bulk_modulus", 6.0e9}, {"ve_shear_modulus", 1.0e9},
                             {"ve_bulk_modulus", 2.0e9}, {"ve_volumetric_viscosity", 6.0e14},
                             {"ve_deviatoric_viscosity", 2.0e14}}},
+      // Matrix G = 2 (c1 + c2) = 3 GPa, K = 8 GPa; weak fibres (c3 c4 ~ 1e-12 G, direction in
+      // sample_solid_blocks) so the small-strain contracts see the matrix: the fibres are
+      // bilinear (no compression) and checked in test_model_trans_iso_hyper.
+      {"trans_iso_hyper", {{"bulk_modulus", 8.0e9}, {"c1", 1.0e9}, {"c2", 0.5e9}, {"c3", 1e-3}, {"c4", 3.0},
+                           {"c5", 1e-2}, {"fiber_stretch", 1.1}, {"max_fiber_strain", 2.0},
+                           {"max_matrix_strain", 2.0}, {"failure_option", 0.0}}},
   };
   return table;
 }
@@ -111,6 +122,7 @@ inline const std::map<std::string, std::map<std::string, double>>& sample_solid_
 // shear strain of ~1e-2, so the contracts see both branches).
 inline void add_sample_blocks(const std::string& type, MapModelParameters& p) {
   if (type == "visco_scram") p.enclosing = {{"specific_heat", 996.0}};  // heating needs c_v
+  if (type == "trans_iso_hyper") p.strings["direction_of_symm"] = "[0.6, 0.8, 0]";
   if (type != "elastic_plastic_hp" && type != "elastic_plastic") return;
   p.add_block("yield_condition", "von_mises");
   p.add_block("flow_model", "linear", {{"sigma_0", 3.0e7}, {"K", 1.0e8}});
