@@ -15,7 +15,7 @@
 #include "models/solid/RigidMaterial.h"
 #include "models/solid/ViscoScram.h"
 // chapter-3 special materials (solid-models)
-#include "models/solid/IdealGas.h"
+#include "models/solid/IdealGasMaterial.h"
 #include "models/solid/JwlppMPM.h"
 #include "models/solid/MurnaghanMPM.h"
 #include "models/solid/MwViscoElastic.h"
@@ -41,7 +41,7 @@ const std::map<std::string, Creator>& creators() {
       {"visco_scram", &ViscoScram::create},
       {"UCNH", [](const ModelParameters& p) { return CompNeoHookPlastic::create(p, "UCNH"); }},
       // chapter-3 special materials (solid-models)
-      {"ideal_gas", &IdealGas::create},
+      {"ideal_gas", &IdealGasMaterial::create},
       {"jwlpp_mpm", &JwlppMPM::create},
       {"murnaghanMPM", &MurnaghanMPM::create},
       {"mw_visco_elastic", &MwViscoElastic::create},

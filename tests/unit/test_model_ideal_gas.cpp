@@ -1,10 +1,10 @@
-// ideal_gas (models/solid/IdealGas.h): VT §3.2 eqs. 3.3-3.5 and the MPMICE
+// ideal_gas (models/solid/IdealGasMaterial.h): VT §3.2 eqs. 3.3-3.5 and the MPMICE
 // hooks of Vaango's IdealGasMP (P = (gamma - 1) rho c_v T).
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "models/solid/IdealGas.h"
+#include "models/solid/IdealGasMaterial.h"
 #include "tests/support/SolidModelDriver.h"
 
 namespace tephra {

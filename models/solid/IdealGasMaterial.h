@@ -1,5 +1,5 @@
 #pragma once
-// Vaango's ideal gas material, type "ideal_gas" (VT §3.2, eqs. 3.3-3.5; Vaango
+// Vaango's ideal gas material (class IdealGasMaterial: models/eos has the ICE IdealGas), type "ideal_gas" (VT §3.2, eqs. 3.3-3.5; Vaango
 // class IdealGasMP). Explicit MPM only. An isentropic gas without tension:
 //
 //   p(J) = p_ref [exp(gamma eps_v) - 1] = p_ref (J^{-gamma} - 1)  for J < 1,  0 for J >= 1   (3.4)
@@ -33,9 +33,9 @@ struct IdealGasParams {
 // p(J) of eq. 3.4 (no tension: 0 for J >= 1).
 double ideal_gas_pressure(double J, const IdealGasParams& p);
 
-class IdealGas final : public ConstitutiveModel {
+class IdealGasMaterial final : public ConstitutiveModel {
  public:
-  explicit IdealGas(const IdealGasParams& p) : p_(p) {}
+  explicit IdealGasMaterial(const IdealGasParams& p) : p_(p) {}
   static ConstitutiveModelP create(const ModelParameters& params);
 
   std::string type() const override { return "ideal_gas"; }

@@ -1,4 +1,4 @@
-#include "models/solid/IdealGas.h"
+#include "models/solid/IdealGasMaterial.h"
 
 #include <cmath>
 
@@ -15,7 +15,7 @@ double ideal_gas_pressure(double J, const IdealGasParams& p) {
   return p.reference_pressure * std::expm1(-p.gamma * std::log(J));  // p_ref [exp(gamma eps_v) - 1]
 }
 
-long IdealGas::update(const SolidUpdateInput& in, const SolidUpdateOutput& out) const {
+long IdealGasMaterial::update(const SolidUpdateInput& in, const SolidUpdateOutput& out) const {
   const Eigen::Matrix3d I = Eigen::Matrix3d::Identity();
   return for_each_point(in.F_new.size(), [&](size_t i) {
     const double J = in.F_new[i].determinant();
@@ -33,7 +33,7 @@ long IdealGas::update(const SolidUpdateInput& in, const SolidUpdateOutput& out) 
   });
 }
 
-std::optional<SolidEosPoint> IdealGas::pressure_at_density(double rho, double, double T) const {
+std::optional<SolidEosPoint> IdealGasMaterial::pressure_at_density(double rho, double, double T) const {
   SolidEosPoint e;
   const double P = (p_.gamma - 1.0) * rho * p_.cv * T;  // absolute pressure
   e.pressure = P - p_.reference_pressure;
@@ -42,11 +42,11 @@ std::optional<SolidEosPoint> IdealGas::pressure_at_density(double rho, double, d
   return e;
 }
 
-std::optional<double> IdealGas::density_at_pressure(double p_gauge, double, double T) const {
+std::optional<double> IdealGasMaterial::density_at_pressure(double p_gauge, double, double T) const {
   return (p_gauge + p_.reference_pressure) / ((p_.gamma - 1.0) * p_.cv * T);
 }
 
-ConstitutiveModelP IdealGas::create(const ModelParameters& params) {
+ConstitutiveModelP IdealGasMaterial::create(const ModelParameters& params) {
   IdealGasParams p;
   p.gamma = params.get_double("gamma");
   p.cv = params.get_double("specific_heat");
@@ -56,7 +56,7 @@ ConstitutiveModelP IdealGas::create(const ModelParameters& params) {
   if (!(p.cv > 0.0)) params.fail("specific_heat", "specific_heat must be > 0");
   if (!(p.reference_pressure > 0.0)) params.fail("reference_pressure", "reference_pressure must be > 0");
   if (!(p.reference_temperature > 0.0)) params.fail("reference_temperature", "reference_temperature must be > 0");
-  return std::make_shared<IdealGas>(p);
+  return std::make_shared<IdealGasMaterial>(p);
 }
 
 }  // namespace tephra
