@@ -53,6 +53,42 @@ long CompMooneyRivlin::update(const SolidUpdateInput& in, const SolidUpdateOutpu
   });
 }
 
+namespace {
+// Hydrostatic p(J) = -W'(J) and W''(J) (header).
+void cmr_hydrostatic(double J, const CompMooneyRivlinParams& p, double& pressure, double& W2) {
+  const double C1 = p.C1, C2 = p.C2, C3 = p.C3(), C4 = p.C4();
+  const double c = std::cbrt(J);
+  pressure = -(2.0 * C1 / c + 4.0 * C2 * c - 4.0 * C3 / std::pow(J, 5) + 4.0 * C4 * J * (J * J - 1.0));
+  W2 = -2.0 / 3.0 * C1 / (c * J) + 4.0 / 3.0 * C2 / (c * c) + 20.0 * C3 / std::pow(J, 6) + 4.0 * C4 * (3.0 * J * J - 1.0);
+}
+}  // namespace
+
+std::optional<SolidEosPoint> CompMooneyRivlin::pressure_at_density(double rho, double density0, double) const {
+  const double J = density0 / rho;
+  SolidEosPoint e;
+  double W2 = 0.0;
+  cmr_hydrostatic(J, p_, e.pressure, W2);
+  e.dp_drho = W2 * J * J / density0;
+  e.c2 = e.dp_drho;
+  return e;
+}
+
+std::optional<double> CompMooneyRivlin::density_at_pressure(double p_gauge, double density0, double T) const {
+  // Newton in rho from rho0, bisection on a bracket once one is found (p increases with rho while W'' > 0).
+  double rho = density0, lo = 0.0, hi = std::numeric_limits<double>::infinity();
+  for (int it = 0; it < 200; ++it) {
+    const SolidEosPoint e = *pressure_at_density(rho, density0, T);
+    const double r = e.pressure - p_gauge;
+    if (std::abs(r) <= 1e-14 * (std::abs(p_gauge) + bulk_modulus())) return rho;
+    if (r > 0) hi = rho; else lo = rho;
+    double next = e.dp_drho > 0 ? rho - r / e.dp_drho : std::numeric_limits<double>::quiet_NaN();
+    if (!(next > lo && next < hi)) next = std::isfinite(hi) ? 0.5 * (lo + hi) : 2.0 * rho;
+    if (!(e.dp_drho > 0)) return std::numeric_limits<double>::quiet_NaN();  // not monotone here
+    rho = next;
+  }
+  return std::numeric_limits<double>::quiet_NaN();
+}
+
 ConstitutiveModelP CompMooneyRivlin::create(const ModelParameters& params) {
   CompMooneyRivlinParams p;
   p.C1 = params.get_double("he_constant_1");

@@ -51,7 +51,15 @@ class CompMooneyRivlin final : public ConstitutiveModel {
   double bulk_modulus() const override { return p_.bulk_modulus(); }
   double shear_modulus() const override { return p_.shear_modulus(); }
   bool hyperelastic() const override { return true; }
-  // No pressure hooks: Vaango has none for this model either.
+  // MPMICE hooks (Vaango has none for this model; added by Tephra): the pressure of
+  // the hydrostatic state F = J^{1/3} I, J = rho0/rho, where eq. 4.10 reduces to
+  //   W(J) = 3 C1 (J^{2/3} - 1) + 3 C2 (J^{4/3} - 1) + C3 (J^{-4} - 1) + C4 (J^2 - 1)^2,
+  //   p = -W'(J) = -[2 C1 J^{-1/3} + 4 C2 J^{1/3} - 4 C3 J^{-5} + 4 C4 J (J^2 - 1)],
+  //   dp/drho = W''(J) J^2 / rho0,  W'' = -2/3 C1 J^{-4/3} + 4/3 C2 J^{-2/3} + 20 C3 J^{-6} + 4 C4 (3 J^2 - 1)
+  // (W''(1) = K of the header), c^2 = dp/drho. The inverse solves p(rho) = p_gauge by
+  // safeguarded Newton; NaN where p(rho) is not monotone (W'' <= 0, C4 < 0 in tension).
+  std::optional<SolidEosPoint> pressure_at_density(double rho, double density0, double T) const override;
+  std::optional<double> density_at_pressure(double p_gauge, double density0, double T) const override;
 
  private:
   CompMooneyRivlinParams p_;

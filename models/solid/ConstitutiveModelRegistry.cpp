@@ -14,6 +14,13 @@
 #include "models/solid/HypoElastic.h"
 #include "models/solid/RigidMaterial.h"
 #include "models/solid/ViscoScram.h"
+// chapter-3 special materials (solid-models)
+#include "models/solid/IdealGasMaterial.h"
+#include "models/solid/JwlppMPM.h"
+#include "models/solid/MurnaghanMPM.h"
+#include "models/solid/MwViscoElastic.h"
+#include "models/solid/TransIsoHyper.h"
+#include "models/solid/Water.h"
 
 namespace tephra {
 
@@ -33,6 +40,13 @@ const std::map<std::string, Creator>& creators() {
       {"rigid", &RigidMaterial::create},
       {"visco_scram", &ViscoScram::create},
       {"UCNH", [](const ModelParameters& p) { return CompNeoHookPlastic::create(p, "UCNH"); }},
+      // chapter-3 special materials (solid-models)
+      {"ideal_gas", &IdealGasMaterial::create},
+      {"jwlpp_mpm", &JwlppMPM::create},
+      {"murnaghanMPM", &MurnaghanMPM::create},
+      {"mw_visco_elastic", &MwViscoElastic::create},
+      {"trans_iso_hyper", &TransIsoHyper::create},
+      {"water", &Water::create},
   };
   return table;
 }

@@ -116,7 +116,8 @@ TEST_P(SolidContract, SmallStrainLimitIsLinearElasticity) {
   // F = I + eps H in one step: sigma = K tr(e) I + 2G dev(e) + O(eps^2), e = sym(eps H);
   // the relative error must fall like eps.
   std::mt19937 rng(3);
-  const M3 H = random_F(rng, 0.5) - M3::Identity();
+  M3 H = random_F(rng, 0.5) - M3::Identity();
+  if (test::sample_is_tensionless(GetParam())) H -= (H.trace() / 3 + 1) * M3::Identity();  // tr H = -3: J < 1
   const double K = model->bulk_modulus(), G = model->shear_modulus();
   double err[2];
   const double eps[2] = {1e-4, 1e-5};
@@ -162,8 +163,10 @@ TEST_P(SolidContract, HyperelasticStressIsDerivativeOfEnergy) {
 TEST_P(SolidContract, PressureHooksWhereProvided) {
   const auto e0 = model->pressure_at_density(kRho0, kRho0, 300.0);
   if (!e0) GTEST_SKIP() << "no pressure hooks (MPMICE reports MissingFeature)";
-  EXPECT_NEAR(e0->pressure, 0.0, 1e-12 * model->bulk_modulus());
-  EXPECT_NEAR(e0->dp_drho, model->bulk_modulus() / kRho0, 1e-12 * model->bulk_modulus() / kRho0);
+  if (!test::sample_has_thermal_hooks(GetParam())) {
+    EXPECT_NEAR(e0->pressure, 0.0, 1e-12 * model->bulk_modulus());
+    EXPECT_NEAR(e0->dp_drho, model->bulk_modulus() / kRho0, 1e-12 * model->bulk_modulus() / kRho0);
+  }
   if (model->rigid()) {
     // Rigid (Vaango RigidMaterial): p = p_ref and rho = rho0 whatever the
     // load; dp/drho = K/rho0 is the stiffness of the incompressible limit.

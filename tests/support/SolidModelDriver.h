@@ -55,6 +55,11 @@ class MapModelParameters final : public ModelParameters {
   double enclosing_double(const std::string& n, double f) const override {
     return enclosing.count(n) ? enclosing.at(n) : f;
   }
+  // Text values (vectors such as "[1, 0, 0]").
+  std::map<std::string, std::string> strings;
+  std::string get_string(const std::string& n, const std::string& f) const override {
+    return strings.count(n) ? strings.at(n) : f;
+  }
 };
 
 // Parameters of every registered model for the contract tests (a new model
@@ -86,6 +91,28 @@ inline const std::map<std::string, std::map<std::string, double>>& sample_solid_
                        {"G1", 0.6e9}, {"G2", 0.6e9}, {"G3", 0.6e9}, {"G4", 0.6e9}, {"G5", 0.6e9},
                        {"RTau1", 0.0}, {"RTau2", 1e-6}, {"RTau3", 1e-6}, {"RTau4", 1e-5}, {"RTau5", 1e-5},
                        {"Beta", 1.5e-4}, {"Gamma", 1.0}, {"DCp_DTemperature", 3.30773}}},
+      // ---- chapter-3 special materials (solid-models). Air-like gas (K = gamma p_ref).
+      {"ideal_gas", {{"gamma", 1.4}, {"specific_heat", 716.0}, {"reference_pressure", 101325.0}}},
+      // Tait-like water (K = gamma kappa = 2.2 GPa); no viscosity: the contracts see the EOS only.
+      {"water", {{"bulk_modulus", 2.2e9 / 7.15}, {"gamma", 7.15}, {"viscosity", 0.0}}},
+      {"murnaghanMPM", {{"K", 8.0e9}, {"Kprime", 4.0}, {"pressure", 101325.0}, {"rho0", 7800.0}, {"viscosity", 0.0}}},
+      // ANFO (Souers' JWL++ constants of inputs/ICE/EOSData); ignition at 0.2 GPa with a fast
+      // rate and coarse burn substeps so the contracts' paths burn (f is a scalar of J and p: objective).
+      {"jwlpp_mpm", {{"ignition_pressure", 2.0e8}, {"viscosity", 0.0}, {"murnaghan_K", 3.9e-10}, {"murnaghan_n", 7.4},
+                     {"jwl_A", 2.9867e11}, {"jwl_B", 4.11706e9}, {"jwl_C", 7.206147e8}, {"jwl_R1", 4.95},
+                     {"jwl_R2", 1.15}, {"jwl_om", 0.35}, {"reaction_G", 1e-9}, {"reaction_b", 1.0},
+                     {"max_burn_timestep_size", 1e-2}}},
+      // K = K_e + K_ve = 8 GPa, G = G_e + G_ve = 3 GPa; slow relaxation (tau >= 1e5 s) so the
+      // small-strain contract sees the instantaneous moduli.
+      {"mw_visco_elastic", {{"e_shear_modulus", 2.0e9}, {"e_bulk_modulus", 6.0e9}, {"ve_shear_modulus", 1.0e9},
+                            {"ve_bulk_modulus", 2.0e9}, {"ve_volumetric_viscosity", 6.0e14},
+                            {"ve_deviatoric_viscosity", 2.0e14}}},
+      // Matrix G = 2 (c1 + c2) = 3 GPa, K = 8 GPa; weak fibres (c3 c4 ~ 1e-12 G, direction in
+      // sample_solid_blocks) so the small-strain contracts see the matrix: the fibres are
+      // bilinear (no compression) and checked in test_model_trans_iso_hyper.
+      {"trans_iso_hyper", {{"bulk_modulus", 8.0e9}, {"c1", 1.0e9}, {"c2", 0.5e9}, {"c3", 1e-3}, {"c4", 3.0},
+                           {"c5", 1e-2}, {"fiber_stretch", 1.1}, {"max_fiber_strain", 2.0},
+                           {"max_matrix_strain", 2.0}, {"failure_option", 0.0}}},
   };
   return table;
 }
@@ -95,11 +122,20 @@ inline const std::map<std::string, std::map<std::string, double>>& sample_solid_
 // shear strain of ~1e-2, so the contracts see both branches).
 inline void add_sample_blocks(const std::string& type, MapModelParameters& p) {
   if (type == "visco_scram") p.enclosing = {{"specific_heat", 996.0}};  // heating needs c_v
+  if (type == "trans_iso_hyper") p.strings["direction_of_symm"] = "[0.6, 0.8, 0]";
   if (type != "elastic_plastic_hp" && type != "elastic_plastic") return;
   p.add_block("yield_condition", "von_mises");
   p.add_block("flow_model", "linear", {{"sigma_0", 3.0e7}, {"K", 1.0e8}});
   p.enclosing = {{"melt_temp", 1356.0}, {"specific_heat", 414.0}, {"density", 8930.0}};
 }
+
+// Contract exceptions of special materials (each with its reason, VT ch. 3):
+//  tensionless: sigma = 0 for J >= 1 (ideal_gas, VT eq. 3.3-3.4): the small-strain
+//    limit is checked on a compressive path;
+//  thermal hooks: the MPMICE hooks are a thermal EOS p(rho, T) (ideal_gas: (gamma-1) rho c_v T),
+//    not the mechanical p(J): no p(rho0) = 0 / dp/drho = K/rho0 reference checks.
+inline bool sample_is_tensionless(const std::string& type) { return type == "ideal_gas"; }
+inline bool sample_has_thermal_hooks(const std::string& type) { return type == "ideal_gas"; }
 
 inline ConstitutiveModelP make_sample_model(const std::string& type) {
   MapModelParameters p(sample_solid_parameters().at(type));

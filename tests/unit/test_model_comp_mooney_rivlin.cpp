@@ -65,7 +65,7 @@ TEST(ModelCompMooneyRivlin, ModuliAndParameters) {
   ConstitutiveModelP m = create_constitutive_model("comp_mooney_rivlin", p);
   ASSERT_TRUE(m);
   EXPECT_TRUE(m->hyperelastic());
-  EXPECT_FALSE(m->pressure_at_density(kRho0, kRho0, 300).has_value());  // Vaango has none either
+  ASSERT_TRUE(m->pressure_at_density(kRho0, kRho0, 300).has_value());  // Tephra's hydrostatic hooks
   p.values["he_PR"] = 0.5;
   EXPECT_THROW(create_constitutive_model("comp_mooney_rivlin", p), std::invalid_argument);
   p.values["he_PR"] = 0.49;
@@ -103,6 +103,24 @@ TEST(ModelRigid, ZeroStressForAnyDeformationAndHeldReferenceConfiguration) {
   EXPECT_EQ(s.energy_density, 0.0);
   p.values["bulk_modulus"] = -1;
   EXPECT_THROW(create_constitutive_model("rigid", p), std::invalid_argument);
+}
+
+TEST(ModelCompMooneyRivlin, PressureHooksAreTheHydrostaticStress) {
+  // The hook p(rho) is the pressure of the point function at F = J^{1/3} I, J = rho0/rho:
+  // sigma = -p I (eq. 4.12 reduced to a hydrostatic state); round trip 1e-10.
+  test::MapModelParameters p({{"he_constant_1", 1e5}, {"he_constant_2", 2e4}, {"he_PR", 0.49}});
+  ConstitutiveModelP m = create_constitutive_model("comp_mooney_rivlin", p);
+  for (double J : {0.8, 0.95, 1.0, 1.05, 1.3}) {
+    const SolidPointResult r = comp_mooney_rivlin_point(std::cbrt(J) * Eigen::Matrix3d::Identity(), kRho0, kP);
+    const SolidEosPoint e = *m->pressure_at_density(kRho0 / J, kRho0, 300);
+    EXPECT_NEAR(e.pressure, -r.stress(0, 0), 1e-9 * kP.bulk_modulus()) << J;
+    EXPECT_NEAR(r.stress(0, 1), 0.0, 1e-9 * kP.bulk_modulus());
+    const double rho = kRho0 / J, h = 1e-6 * rho;
+    const double fd = (m->pressure_at_density(rho + h, kRho0, 300)->pressure -
+                       m->pressure_at_density(rho - h, kRho0, 300)->pressure) / (2 * h);
+    EXPECT_NEAR(e.dp_drho, fd, 1e-6 * e.dp_drho);
+    EXPECT_NEAR(*m->density_at_pressure(e.pressure, kRho0, 300), rho, 1e-10 * rho);
+  }
 }
 
 }  // namespace
