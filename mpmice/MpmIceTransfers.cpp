@@ -12,6 +12,7 @@
 
 #include "core/grid/Loop.h"
 #include "mpmice/MpmIceComponent.h"
+#include "mpm/shape/AxisStencils.h"
 
 namespace tephra {
 
@@ -69,11 +70,10 @@ void MpmIceComponent::solid_state_to_cells() {
     const Particles& p = mm.particles;
     const Stencils& st = mm.stencils;
     std::vector<double> mT(ng.count(), 0.0);  // sum m_p T_p S_gp
-    for (std::size_t i = 0; i < p.size(); ++i)
-      for (int k = 0; k < st.width; ++k) {
-        const std::size_t e = i * std::size_t(st.width) + std::size_t(k);
-        mT[st.node[e]] += p.mass[i] * p.temperature[i] * st.w[e];
-      }
+    visit_stencils(st, [&](const auto& view) {
+      for (std::size_t i = 0; i < p.size(); ++i)
+        view.weights(i, [&](std::size_t gi, double w) { mT[gi] += p.mass[i] * p.temperature[i] * w; });
+    });
     const IntVec3 off = node_offset(g, ng);
     const IceMaterialSpec& spec = is.materials[s];
     const double min_mass = spec.tiny_rho * mm.density * V;
@@ -124,21 +124,21 @@ void MpmIceComponent::pressure_to_particles() {
     const Stencils& st = mm.stencils;
     std::vector<double>& pp = particle_pressure_[s];
     pp.assign(mm.particles.size(), 0.0);
-    for (std::size_t i = 0; i < mm.particles.size(); ++i) {
-      double sum = 0;
-      for (int k = 0; k < st.width; ++k) {
-        const std::size_t e = i * std::size_t(st.width) + std::size_t(k);
-        const std::size_t gi = st.node[e];
-        if (!done[gi]) {
-          const std::size_t nx = std::size_t(ng.n[0]), ny = std::size_t(ng.n[1]);
-          const IntVec3 node(int(gi % nx), int((gi / nx) % ny), int(gi / (nx * ny)));
-          pN[gi] = node_average(g, ice_->press_CC(), node - off, all);
-          done[gi] = 1;
-        }
-        sum += st.w[e] * pN[gi];
+    visit_stencils(st, [&](const auto& view) {
+      for (std::size_t i = 0; i < mm.particles.size(); ++i) {
+        double sum = 0;
+        view.weights(i, [&](std::size_t gi, double w) {
+          if (!done[gi]) {
+            const std::size_t nx = std::size_t(ng.n[0]), ny = std::size_t(ng.n[1]);
+            const IntVec3 node(int(gi % nx), int((gi / nx) % ny), int(gi / (nx * ny)));
+            pN[gi] = node_average(g, ice_->press_CC(), node - off, all);
+            done[gi] = 1;
+          }
+          sum += w * pN[gi];
+        });
+        pp[i] = sum - p_ref_;
       }
-      pp[i] = sum - p_ref_;
-    }
+    });
   }
 }
 
@@ -149,13 +149,12 @@ void MpmIceComponent::add_internal_forces() {
     MpmMaterial& mm = mpm_->materials()[s];
     const Stencils& st = mm.stencils;
     const std::vector<double>& pp = particle_pressure_[s];
-    for (std::size_t i = 0; i < mm.particles.size(); ++i) {
-      const double vp = mm.particles.volume[i] * pp[i];
-      for (int k = 0; k < st.width; ++k) {
-        const std::size_t e = i * std::size_t(st.width) + std::size_t(k);
-        mm.grid.internal_force[st.node[e]] -= vp * st.grad[e];
+    visit_stencils(st, [&](const auto& view) {
+      for (std::size_t i = 0; i < mm.particles.size(); ++i) {
+        const double vp = mm.particles.volume[i] * pp[i];
+        view.entries(i, [&](std::size_t gi, double, const Vec3& grad) { mm.grid.internal_force[gi] -= vp * grad; });
       }
-    }
+    });
   }
 }
 
@@ -196,11 +195,10 @@ void MpmIceComponent::cell_changes_to_nodes_and_particles() {
         }
     Particles& p = mm.particles;
     const Stencils& st = mm.stencils;
-    for (std::size_t i = 0; i < p.size(); ++i)
-      for (int k = 0; k < st.width; ++k) {
-        const std::size_t e = i * std::size_t(st.width) + std::size_t(k);
-        p.temperature[i] += st.w[e] * dTN[st.node[e]];
-      }
+    visit_stencils(st, [&](const auto& view) {
+      for (std::size_t i = 0; i < p.size(); ++i)
+        view.weights(i, [&](std::size_t gi, double w) { p.temperature[i] += w * dTN[gi]; });
+    });
   }
 }
 
