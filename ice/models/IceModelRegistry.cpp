@@ -16,7 +16,7 @@ const std::map<std::string, Factory>& factories() {
   static const std::map<std::string, Factory> f = {
       {"IandG", make_ignition_growth}, {"JWLpp", make_jwlpp},
       {"LightTime", make_light_time},  {"PassiveScalar", make_passive_scalar},
-      {"ZeroOrder", make_zero_order},
+      {"ZeroOrder", make_zero_order},  {"mass_momentum_energy_src", make_mass_mom_eng_src},
   };
   return f;
 }
@@ -26,7 +26,7 @@ const std::map<std::string, Factory>& factories() {
 // models at all (Vaango's schema lists them there by mistake).
 const std::vector<std::string>& vaango_types() {
   static const std::vector<std::string> v = {"SimpleRxn", "AdiabaticTable", "Radiation", "Simple_Burn",
-                                             "Steady_Burn", "Test", "Unsteady_Burn", "mass_momentum_energy_src",
+                                             "Steady_Burn", "Test", "Unsteady_Burn",
                                              "flameSheet_rxn", "DDT0", "DDT1", "SolidReactionModel", "MesoBurn"};
   return v;
 }

@@ -85,5 +85,6 @@ IceModelP make_zero_order(const DeckNode& model, const IceSetup& setup);
 IceModelP make_ignition_growth(const DeckNode& model, const IceSetup& setup);
 IceModelP make_add_heat(const DeckNode& add_heat, const IceSetup& setup);
 IceModelP make_passive_scalar(const DeckNode& model, const IceSetup& setup);
+IceModelP make_mass_mom_eng_src(const DeckNode& model, const IceSetup& setup);
 
 }  // namespace tephra

@@ -181,7 +181,7 @@ TEST(IceModels, DeckErrorsNameTheElement) {
   EXPECT_THROW(component(deck(R"(<Models><Model type="Steady_Burn"/></Models>)")), MissingFeature);
   EXPECT_THROW(component(deck(R"(<Models><Model type="Nonsense"/></Models>)")), DeckError);
   const auto keys = registered_keys("Model");
-  for (const char* k : {"ADD_HEAT", "IandG", "JWLpp", "LightTime", "PassiveScalar", "ZeroOrder"})
+  for (const char* k : {"ADD_HEAT", "IandG", "JWLpp", "LightTime", "PassiveScalar", "ZeroOrder", "mass_momentum_energy_src"})
     EXPECT_NE(std::find(keys.begin(), keys.end(), k), keys.end()) << k;
 }
 
