@@ -7,6 +7,7 @@
 // Departure: the manual doubles the weight of nodes on symmetry planes; not
 // done yet (no symmetry BCs are accepted with MPM materials in MPMICE decks
 // yet - see docs/mpmice.md).
+#include <array>
 #include <algorithm>
 #include <cmath>
 
@@ -75,24 +76,48 @@ void MpmIceComponent::solid_state_to_cells() {
         view.weights(i, [&](std::size_t gi, double w) { mT[gi] += p.mass[i] * p.temperature[i] * w; });
     });
     const IntVec3 off = node_offset(g, ng);
+    std::array<bool, 6> symmetric{};
+    for (int fc = 0; fc < 6; ++fc) symmetric[fc] = mm.bcs.face[fc].kind == FaceVelocityBC::Kind::Symmetry;
     const IceMaterialSpec& spec = is.materials[s];
     const double min_mass = spec.tiny_rho * mm.density * V;
     IceMaterialFields& f = fields[s];
     for (std::size_t pi = 0; pi < g.patches.size(); ++pi)
       for_each_cell_serial(g.patches[pi].cells_with_extra(), [&](int i, int j, int k) {
         const IntVec3 c(i, j, k);
+        // An extra cell beyond a symmetry plane is the mirror image of the
+        // interior cell across it (normal velocity negated below).
+        IntVec3 cm = c;
+        Vec3 flip = Vec3::Ones();
+        for (int d = 0; d < 3; ++d) {
+          if (symmetric[2 * d] && c[d] < 0) cm[d] = -1 - c[d], flip[d] = -1;
+          if (symmetric[2 * d + 1] && c[d] >= g.cells[d]) cm[d] = 2 * g.cells[d] - 1 - c[d], flip[d] = -1;
+        }
         double M = 0, MT = 0;
         Vec3 P = Vec3::Zero();
         for (int n = 0; n < 8; ++n) {
-          const std::size_t gi = ng.index(c + off + IntVec3(n & 1, (n >> 1) & 1, (n >> 2) & 1));
-          M += 0.125 * ng.mass[gi];
-          P += 0.125 * ng.mass[gi] * ng.velocity[gi];
-          MT += 0.125 * mT[gi];
+          const IntVec3 node = cm + off + IntVec3(n & 1, (n >> 1) & 1, (n >> 2) & 1);
+          const std::size_t gi = ng.index(node);
+          // VT step 1: a node on a symmetry plane holds only the particles on
+          // the domain's side; its mirror images would give it as much again,
+          // so its weight doubles per plane it lies on (x4 on an edge of two
+          // planes), and its momentum normal to the plane is zero (the image
+          // particles' normal velocities cancel the real ones').
+          double w = 0.125;
+          Vec3 v = ng.velocity[gi];
+          for (int d = 0; d < 3; ++d)
+            if ((symmetric[2 * d] && node[d] == ng.extra[d]) ||
+                (symmetric[2 * d + 1] && node[d] == ng.n[d] - 1 - ng.extra[d])) {
+              w *= 2;
+              v[d] = 0;
+            }
+          M += w * ng.mass[gi];
+          P += w * ng.mass[gi] * v;
+          MT += w * mT[gi];
         }
         double T = spec.sources[0].temperature;
         Vec3 u = Vec3::Zero();
         if (M > min_mass) {
-          u = P / M;
+          u = (P / M).cwiseProduct(flip);
           T = MT / M;
         } else {
           M = min_mass;
