@@ -12,6 +12,8 @@ class NoKinematic final : public KinematicHardeningModel {
   Eigen::Matrix3d backstress_rate(const Eigen::Matrix3d&, const Eigen::Matrix3d&) const override {
     return Eigen::Matrix3d::Zero();
   }
+  double linear_modulus() const override { return 0.0; }
+  double recovery_modulus() const override { return 0.0; }
 };
 
 // Prager, eq. 11.2: β̇ = (2/3) s H ε̇^p. Armstrong-Frederick, eq. 11.3:
@@ -24,6 +26,8 @@ class ArmstrongFrederick final : public KinematicHardeningModel {
   Eigen::Matrix3d backstress_rate(const Eigen::Matrix3d& beta, const Eigen::Matrix3d& dp) const override {
     return 2.0 / 3.0 * s * H1 * dp - s * H2 * beta * dp.norm();
   }
+  double linear_modulus() const override { return s * H1; }
+  double recovery_modulus() const override { return s * H2; }
 };
 
 class MetalInternalVar final : public InternalVariableModel {

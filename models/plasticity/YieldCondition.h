@@ -29,6 +29,16 @@ class KinematicHardeningModel {
   virtual std::string type() const = 0;
   virtual Eigen::Matrix3d backstress_rate(const Eigen::Matrix3d& backstress,
                                           const Eigen::Matrix3d& plastic_strain_rate) const = 0;
+  // The moduli of the rate written as β̇ = (2/3) H_lin ε̇^p - H_rec β ||ε̇^p|| (scale <beta>
+  // included): H_lin = s H (Prager), s H_1 (AF); H_rec = 0 (Prager), s H_2 (AF); both 0 for none.
+  // The composed return (elastic_plastic_hp) integrates this rate by backward Euler.
+  virtual double linear_modulus() const = 0;
+  virtual double recovery_modulus() const = 0;
+  // Backward Euler over a step with plastic strain increment Δε^p:
+  //   β_{n+1} (1 + H_rec ||Δε^p||) = β_n + (2/3) H_lin Δε^p.
+  Eigen::Matrix3d backstress_after(const Eigen::Matrix3d& beta_n, const Eigen::Matrix3d& delta_eps_p) const {
+    return (beta_n + 2.0 / 3.0 * linear_modulus() * delta_eps_p) / (1.0 + recovery_modulus() * delta_eps_p.norm());
+  }
 };
 
 // Damage, VT ch. 15: the rate Ḋ for the state (ε̇_p, T) and the stress.

@@ -17,7 +17,7 @@ namespace tephra {
 
 namespace {
 enum HistoryIndex { kEpsP = 0, kEpsPRate = 1, kPorosity = 2, kDamage = 3, kLocalized = 4, kHistoryCount = 5 };
-constexpr int kMaxHistory = kHistoryCount + 2;  // + plasticVolumetricStrain, initialFieldsDrawn
+constexpr int kMaxHistory = kHistoryCount + 2 + 9;  // + plasticVolumetricStrain, initialFieldsDrawn, backStress
 }  // namespace
 
 std::vector<HistoryVariable> ElasticPlasticHP::history() const {
@@ -32,6 +32,9 @@ std::vector<HistoryVariable> ElasticPlasticHP::history() const {
     h.push_back({"plasticVolumetricStrain", 1, {0.0}, "ln J^p = sum of tr(Delta eps^p) (porous yield only) [-]"});
   if (k_drawn_ >= 0)
     h.push_back({"initialFieldsDrawn", 1, {0.0}, "1 once the Gaussian initial porosity/damage is drawn"});
+  if (k_beta_ >= 0)
+    h.push_back({"backStress", 9, std::vector<double>(9, 0.0),
+                 "backstress β (VT ch. 11), in the unrotated frame of the point [Pa]"});
   return h;
 }
 
@@ -73,7 +76,7 @@ bool ElasticPlasticHP::update_point(const Eigen::Matrix3d& F_old, const Eigen::M
   const Eigen::Matrix3d s_trial = s_n + 2.0 * mu * (de - (de.trace() / 3.0) * I);
   const double q_trial = std::sqrt(1.5 * s_trial.squaredNorm());
   Eigen::Matrix3d s = s_trial;
-  double delta = 0.0, sigma_y = 0.0, H = 0.0, mean = eos.p, work = 0.0, tr_dp = 0.0;
+  double delta = 0.0, H = 0.0, mean = eos.p, work = 0.0, tr_dp = 0.0;
   const bool melted = p_.do_melting && T >= st.melt_temperature;
   if (melted) {
     s.setZero();
@@ -95,7 +98,6 @@ bool ElasticPlasticHP::update_point(const Eigen::Matrix3d& F_old, const Eigen::M
       const PorousReturnResult r = porous_return(*yield_, *flow_, pr);
       if (!r.converged) return false;
       delta = r.delta_eps_p;
-      sigma_y = r.sigma_y;
       s = r.stress - (r.I1 / 3.0) * I;
       tr_dp = r.plastic_strain.trace();
       work = r.stress.cwiseProduct(r.plastic_strain).sum();  // σ : Δε^p = (1 - φ) σ_y Δε_p
@@ -105,30 +107,47 @@ bool ElasticPlasticHP::update_point(const Eigen::Matrix3d& F_old, const Eigen::M
       mean = eos_->type() == "default_hypo" ? r.I1 / 3.0 : eos_->evaluate(ei).p;
     }
   } else if (dt > 0.0 && mu > 0.0) {
+    // Von Mises return on ξ = s - β (header comment; β = 0 without kinematic hardening).
+    const double c = std::sqrt(1.5);
+    Eigen::Matrix3d beta_n = Eigen::Matrix3d::Zero();
+    if (kin_) beta_n = Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(hist + k_beta_);
+    const double H1 = kin_ ? kin_->linear_modulus() : 0.0, H2 = kin_ ? kin_->recovery_modulus() : 0.0;
+    const double q_xi_trial = std::sqrt(1.5 * (s_trial - beta_n).squaredNorm());
     const FlowStress y0 = flow_->evaluate(st);
-    if (q_trial > y0.sigma_y) {
-      // Radial return: solve g(Δ) = q_trial - 3μΔ - σ_y(ε_p,n + Δ, Δ/dt, T) = 0.
-      double lo = 0.0, hi = q_trial / (3.0 * mu);
-      double x = std::min(hi, (q_trial - y0.sigma_y) / (3.0 * mu + std::max(0.0, y0.d_eps_p)));
-      const double tol = p_.tolerance * std::max(q_trial, 1.0);
+    if (q_xi_trial > y0.sigma_y) {
+      // g(Δ) = sqrt(3/2)|s_trial - a β_n| - (3μ + a H_1) Δ - σ_y(ε_p,n + Δ, Δ/dt, T), a = 1/(1 + c H_2 Δ).
+      double lo = 0.0, hi = c * (s_trial.norm() + beta_n.norm()) / (3.0 * mu);  // g(hi) <= -σ_y <= 0
+      double x = std::min(hi, (q_xi_trial - y0.sigma_y) / (3.0 * mu + H1 + std::max(0.0, y0.d_eps_p)));
+      const double tol = p_.tolerance * std::max(q_xi_trial, 1.0);
       for (int it = 0; it < 100; ++it) {
         st.eps_p = hist[kEpsP] + x;
         st.eps_p_rate = x / dt;
         const FlowStress y = flow_->evaluate(st);
-        const double g = q_trial - 3.0 * mu * x - y.sigma_y;
-        sigma_y = y.sigma_y;
+        const double a = 1.0 / (1.0 + c * H2 * x), da = -c * H2 * a * a;
+        const Eigen::Matrix3d xi_star = s_trial - a * beta_n;
+        const double xi_norm = xi_star.norm();
+        const double g = c * xi_norm - (3.0 * mu + a * H1) * x - y.sigma_y;
         H = y.d_eps_p;  // hardening modulus of the stability tangent (isothermal return)
         if (std::abs(g) <= tol) break;
         (g > 0.0 ? lo : hi) = x;
-        const double dg = -3.0 * mu - y.d_eps_p - y.d_eps_p_rate / dt;
-        double next = x - g / dg;
+        const double dq = xi_norm > 0.0 ? -da * c * xi_star.cwiseProduct(beta_n).sum() / xi_norm : 0.0;
+        const double dg = dq - 3.0 * mu - a * H1 - da * H1 * x - y.d_eps_p - y.d_eps_p_rate / dt;
+        double next = dg < 0.0 ? x - g / dg : 0.5 * (lo + hi);
         if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);  // bisection safeguard
         if (hi - lo <= 1e-15 * std::max(hi, 1e-300)) break;
         x = next;
       }
       delta = x;
-      work = sigma_y * delta;
-      s = s_trial * (1.0 - 3.0 * mu * delta / q_trial);
+      const double a = 1.0 / (1.0 + c * H2 * delta);
+      const Eigen::Matrix3d xi_star = s_trial - a * beta_n;
+      const double xi_norm = xi_star.norm();
+      const Eigen::Matrix3d dep = xi_norm > 0.0 ? Eigen::Matrix3d((c * delta / xi_norm) * xi_star) : Eigen::Matrix3d::Zero();
+      s = s_trial - 2.0 * mu * dep;
+      work = s.cwiseProduct(dep).sum();  // σ:Δε^p (tr Δε^p = 0); σ_y Δ when β = 0
+      if (kin_) {
+        const Eigen::Matrix3d beta = kin_->backstress_after(beta_n, dep);
+        Eigen::Map<Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(hist + k_beta_) = beta;
+      }
     }
   }
   hist[kEpsP] += delta;
@@ -191,9 +210,6 @@ ConstitutiveModelP ElasticPlasticHP::create(const ModelParameters& params) {
   params.get_double("initial_material_temperature", 0.0);  // Vaango: reference of the thermal strain (alpha = 0 here)
   if (params.get_double("coeff_thermal_expansion", 0.0) != 0.0)
     params.missing_feature("coeff_thermal_expansion", "elastic_plastic_hp thermal expansion strain (alpha != 0)");
-  const std::string kin = assembly::block_type(params, "kinematic_hardening_model");
-  if (!kin.empty() && kin != "none")
-    params.missing_feature("kinematic_hardening_model", "elastic_plastic_hp kinematic hardening '" + kin + "'");
   const std::string dev = assembly::block_type(params, "deviatoric_stress_model");
   if (!dev.empty() && dev != "hypoElastic")
     params.missing_feature("deviatoric_stress_model", "elastic_plastic_hp deviatoric_stress_model '" + dev + "'");
@@ -240,6 +256,22 @@ ConstitutiveModelP ElasticPlasticHP::create(const ModelParameters& params) {
                                                     yield->type() + "' (the check uses the J2 tangent)");
   }
   if (m->failure_.random_initial_fields()) m->k_drawn_ = k++;
+  // Kinematic hardening (VT ch. 11): the backstress column goes last (flat offset = k).
+  const auto kin = assembly::sub_model(params, "elastic_plastic_hp", "kinematic_hardening_model",
+                                       kinematic_hardening_models(), "none", ctx,
+                                       [](const std::string& key, const ModelParameters& q, const SubModelContext& c) {
+                                         return create_kinematic_hardening_model(key, q, c);
+                                       });
+  if (kin->type() != "none") {
+    if (m->yield_)
+      params.missing_feature("kinematic_hardening_model", "elastic_plastic_hp kinematic hardening with yield_condition '" +
+                                                              yield->type() + "' (von Mises only)");
+    if (m->failure_.stability && m->failure_.stability->type() != "none")
+      params.missing_feature("stability_check", "elastic_plastic_hp stability_check with kinematic hardening (the "
+                                                "check uses the isotropic J2 tangent)");
+    m->kin_ = kin;
+    m->k_beta_ = k++;
+  }
   m->history_count_ = k;
   if (m->flow_->type() == "mechanical_threshold_stress")
     params.missing_feature("flow_model", "elastic_plastic_hp with the MTS evolving structure stress sigma_e");

@@ -32,12 +32,25 @@
 // models/plasticity/PorousReturn.h (isothermal in the return, heating χ σ:Δε^p/(ρ C_p Δt)
 // after it; porosity grows by (1 - φ) tr Δε^p); the plastic volume ln J^p is history and the
 // EOS is evaluated at J^e = J/J^p. Stability checks with a porous yield: MissingFeature.
-// MissingFeature: kinematic hardening, coeff_thermal_expansion != 0, deviatoric_stress_model other than hypoElastic.
+// Kinematic hardening (<kinematic_hardening_model> prager / armstrong_frederick, VT ch. 11)
+// with the von Mises yield: f = sqrt(3/2)|ξ| - σ_y, ξ = s - β (VT ch. 8). The backstress β
+// (history "backStress", unrotated frame, deviatoric) follows the backward Euler of eq. 11.3
+//   β_{n+1} = a (β_n + (2/3) H_1 Δε^p),  a = 1/(1 + H_2 ||Δε^p||)   (H_2 = 0: Prager 11.2)
+// with Δε^p = sqrt(3/2) Δ n̂, n̂ = ξ_{n+1}/|ξ_{n+1}|, Δ = Δε_p. Then ξ_{n+1} is parallel to
+// ξ* = s_trial - a β_n and the return is one scalar equation
+//   g(Δ) = sqrt(3/2)|ξ*(Δ)| - (3μ + a H_1) Δ - σ_y(ε_p,n + Δ, Δ/Δt, T) = 0
+// (Prager: ξ* = ξ_trial, the radial return with modulus 3μ + H_1), bracketed by
+// [0, sqrt(3/2)(|s_trial| + |β_n|)/(3μ)]; s_{n+1} = s_trial - 2μ Δε^p. Without kinematic
+// hardening β = 0 and this is the radial return above. Heating and plastic work use
+// σ:Δε^p (VT eq. 12.14), which is σ_y Δ without a backstress.
+// MissingFeature: kinematic hardening with a porous yield or a stability check,
+// coeff_thermal_expansion != 0, deviatoric_stress_model other than hypoElastic.
 #include <memory>
 
 #include "models/plasticity/FlowStressModel.h"
 #include "models/plasticity/PlasticityEos.h"
 #include "models/plasticity/ThermalModels.h"
+#include "models/plasticity/YieldCondition.h"
 #include "models/solid/ConstitutiveModel.h"
 #include "models/solid/MetalFailure.h"
 
@@ -67,7 +80,8 @@ class ElasticPlasticHP final : public ConstitutiveModel {
   std::optional<double> density_at_pressure(double p_gauge, double density0, double T) const override;
 
   // The point update (what update() does for one point; unit tests call it).
-  // hist = {ε_p, ε̇_p, φ, D, localized}, read at t_n and overwritten with t_{n+1}.
+  // hist = {ε_p, ε̇_p, φ, D, localized, [ln J^p], [drawn], [β (9, row-major)]} (flat),
+  // read at t_n and overwritten with t_{n+1}.
   using PointOut = MetalPointOut;
   bool update_point(const Eigen::Matrix3d& F_old, const Eigen::Matrix3d& F_new, const Eigen::Matrix3d& stress_old,
                     double T, double dt, double density0, double* hist, PointOut& out) const;
@@ -80,6 +94,8 @@ class ElasticPlasticHP final : public ConstitutiveModel {
   std::shared_ptr<const MeltingTemperatureModel> melt_;
   std::shared_ptr<const SpecificHeatModel> cp_;
   std::shared_ptr<const YieldCondition> yield_;  // nullptr: von Mises (radial return)
+  std::shared_ptr<const KinematicHardeningModel> kin_;  // nullptr: no backstress
+  int k_beta_ = -1;   // flat offset of history "backStress" (9 values, last column; kinematic only)
   int k_evp_ = -1;    // history "plasticVolumetricStrain" (porous yield only)
   int k_drawn_ = -1;  // history "initialFieldsDrawn" (Gaussian initial fields only)
   int history_count_ = 5;
