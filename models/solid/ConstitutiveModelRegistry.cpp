@@ -21,6 +21,8 @@
 #include "models/solid/MwViscoElastic.h"
 #include "models/solid/TransIsoHyper.h"
 #include "models/solid/Water.h"
+// round 2 (solid-models): MMS / damage variants
+#include "models/solid/HypoElasticMms.h"
 
 namespace tephra {
 
@@ -47,6 +49,8 @@ const std::map<std::string, Creator>& creators() {
       {"mw_visco_elastic", &MwViscoElastic::create},
       {"trans_iso_hyper", &TransIsoHyper::create},
       {"water", &Water::create},
+      // round 2 (solid-models): MMS / damage variants
+      {"hypo_elastic_mms", &HypoElasticMms::create},
   };
   return table;
 }
