@@ -22,6 +22,7 @@
 #include "models/solid/TransIsoHyper.h"
 #include "models/solid/Water.h"
 // round 2 (solid-models): MMS / damage variants
+#include "models/solid/CnhDamage.h"
 #include "models/solid/HypoElasticMms.h"
 
 namespace tephra {
@@ -50,6 +51,7 @@ const std::map<std::string, Creator>& creators() {
       {"trans_iso_hyper", &TransIsoHyper::create},
       {"water", &Water::create},
       // round 2 (solid-models): MMS / damage variants
+      {"cnh_damage", &CnhDamage::create},
       {"hypo_elastic_mms", &HypoElasticMms::create},
   };
   return table;
