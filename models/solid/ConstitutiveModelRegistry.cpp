@@ -21,6 +21,9 @@
 #include "models/solid/MwViscoElastic.h"
 #include "models/solid/TransIsoHyper.h"
 #include "models/solid/Water.h"
+// round 2 (solid-models): MMS / damage variants
+#include "models/solid/CnhDamage.h"
+#include "models/solid/HypoElasticMms.h"
 
 namespace tephra {
 
@@ -47,6 +50,9 @@ const std::map<std::string, Creator>& creators() {
       {"mw_visco_elastic", &MwViscoElastic::create},
       {"trans_iso_hyper", &TransIsoHyper::create},
       {"water", &Water::create},
+      // round 2 (solid-models): MMS / damage variants
+      {"cnh_damage", &CnhDamage::create},
+      {"hypo_elastic_mms", &HypoElasticMms::create},
   };
   return table;
 }

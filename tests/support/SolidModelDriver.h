@@ -70,6 +70,9 @@ inline const std::map<std::string, std::map<std::string, double>>& sample_solid_
       {"comp_neo_hook", {{"bulk_modulus", 8.0e9}, {"shear_modulus", 3.0e9}}},
       {"cnh_mms", {{"bulk_modulus", 8.0e9}, {"shear_modulus", 3.0e9}}},
       {"hypo_elastic", {{"K", 8.0e9}, {"G", 3.0e9}}},
+      {"hypo_elastic_mms", {{"K", 8.0e9}, {"G", 3.0e9}}},
+      // Failure strain 0.5: far beyond the contracts' small strains (the elastic branch).
+      {"cnh_damage", {{"bulk_modulus", 8.0e9}, {"shear_modulus", 3.0e9}, {"failure_variable_mean", 0.5}}},
       // Vaango's const_test_cmr.ups: G = 2 (C1 + C2) = 2.4e5, nu = 0.49.
       {"comp_mooney_rivlin", {{"he_constant_1", 1.0e5}, {"he_constant_2", 2.0e4}, {"he_PR", 0.49}}},
       {"rigid", {}},
