@@ -39,6 +39,7 @@
 // inter-material momentum exchange removes is not returned either (Uintah
 // neither).
 #include <cmath>
+#include <stdexcept>
 
 #include "core/grid/Loop.h"
 #include "ice/IceAdvection.h"
@@ -46,16 +47,19 @@
 
 namespace tephra {
 
-// Correction 1, first part, for every material before the Lagrangian
-// values: work_corr_[m] = V sum_f p*_f A_f(theta_m) - V theta_m kappa_m p_c delP.
-// Uses flux2_ as scratch.
-void IceComponent::face_pressure_work(double dt) {
+// Correction 1, first part, before the Lagrangian values (one material):
+// work_corr_[0] = V sum_f p*_f A_f(theta) - V theta kappa p_c delP.
+// A_f(theta) are the volume-fraction fluxes that sum_volume_flux_and_kappa
+// left in flux_ for delP_Dilatate: its last call (explicit increment, or the
+// converged outer iteration of the implicit solve) used the final face
+// velocities, and nothing writes flux_ before the Lagrangian phase, so they
+// are reused instead of recomputed (a full limited-flux pass per step).
+void IceComponent::face_pressure_work(double /*dt*/) {
   const Grid& g = setup_.grid;
   const double V = g.cell_volume();
+  if (mats_.size() != 1) throw std::logic_error("face_pressure_work: one ICE material only (IceEnergy.cpp)");
   for (std::size_t m = 0; m < mats_.size(); ++m) {
     const IceMaterialFields& f = mats_[m];
-    // A_f(theta_m): the same fluxes as sum_volume_flux_and_kappa (delP_Dilatate).
-    density_fluxes(g, setup_.advection, f.vol_frac_CC, f.vel_FCME, dt, flux2_);
     for (std::size_t pi = 0; pi < g.patches.size(); ++pi)
       for_each_cell(g.patches[pi].cells(), [&](int i, int j, int k) {
         const IntVec3 c(i, j, k);
@@ -63,7 +67,7 @@ void IceComponent::face_pressure_work(double dt) {
         for (int d = 0; d < 3; ++d) {
           const IntVec3 hi(c + IntVec3::Unit(d));
           const GridArray<double>& pf = press_FC_.at(d, pi);
-          const GridArray<double>& A = flux2_.at(d, pi);
+          const GridArray<double>& A = flux_.at(d, pi);
           work += pf(c) * A(c) - pf(hi) * A(hi);  // inflow through the low face minus outflow through the high face
         }
         const double ss = f.speedSound_CC[pi](c);
