@@ -5,7 +5,7 @@
 #include <Eigen/LU>
 
 #include "models/ModelParameters.h"
-#include "models/solid/PointLoop.h"
+#include "models/solid/ElasticPointLoop.h"
 
 namespace tephra {
 
@@ -28,18 +28,7 @@ Eigen::Matrix3d cnh_mms_first_piola(const Eigen::Matrix3d& F, const CnhMmsParams
 }
 
 long CnhMms::update(const SolidUpdateInput& in, const SolidUpdateOutput& out) const {
-  return for_each_point(in.F_new.size(), [&](size_t i) {
-    const double J = in.F_new[i].determinant();
-    if (!(J > 0.0) || !std::isfinite(J)) return false;
-    const SolidPointResult r = cnh_mms_point(in.F_new[i], in.density0, p_);
-    if (!r.stress.allFinite()) return false;
-    out.stress[i] = r.stress;
-    out.wave_speed[i] = r.wave_speed;
-    out.energy_density[i] = r.energy_density;
-    out.plastic_work[i] = 0.0;  // elastic: no dissipation, no heating
-    out.heating[i] = 0.0;
-    return true;
-  });
+  return update_elastic_points(in, out, [&](const Eigen::Matrix3d& F, double rho0) { return cnh_mms_point(F, rho0, p_); });
 }
 
 ConstitutiveModelP CnhMms::create(const ModelParameters& params) {

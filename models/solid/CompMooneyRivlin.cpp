@@ -8,7 +8,7 @@
 
 #include "models/ModelParameters.h"
 #include "models/solid/Kinematics.h"
-#include "models/solid/PointLoop.h"
+#include "models/solid/ElasticPointLoop.h"
 
 namespace tephra {
 
@@ -39,18 +39,7 @@ SolidPointResult comp_mooney_rivlin_point(const Eigen::Matrix3d& F, double densi
 }
 
 long CompMooneyRivlin::update(const SolidUpdateInput& in, const SolidUpdateOutput& out) const {
-  return for_each_point(in.F_new.size(), [&](size_t i) {
-    const double J = in.F_new[i].determinant();
-    if (!(J > 0.0) || !std::isfinite(J)) return false;
-    const SolidPointResult r = comp_mooney_rivlin_point(in.F_new[i], in.density0, p_);
-    if (!r.stress.allFinite() || !std::isfinite(r.wave_speed)) return false;
-    out.stress[i] = r.stress;
-    out.wave_speed[i] = r.wave_speed;
-    out.energy_density[i] = r.energy_density;
-    out.plastic_work[i] = 0.0;
-    out.heating[i] = 0.0;
-    return true;
-  });
+  return update_elastic_points(in, out, [&](const Eigen::Matrix3d& F, double rho0) { return comp_mooney_rivlin_point(F, rho0, p_); });
 }
 
 namespace {

@@ -5,7 +5,7 @@
 #include <Eigen/LU>
 
 #include "models/ModelParameters.h"
-#include "models/solid/PointLoop.h"
+#include "models/solid/ElasticPointLoop.h"
 
 namespace tephra {
 
@@ -36,18 +36,7 @@ SolidPointResult comp_neo_hookean_point(const Eigen::Matrix3d& F, double density
 }
 
 long CompNeoHookean::update(const SolidUpdateInput& in, const SolidUpdateOutput& out) const {
-  return for_each_point(in.F_new.size(), [&](size_t i) {
-    const double J = in.F_new[i].determinant();
-    if (!(J > 0.0) || !std::isfinite(J)) return false;
-    const SolidPointResult r = comp_neo_hookean_point(in.F_new[i], in.density0, p_);
-    if (!r.stress.allFinite()) return false;
-    out.stress[i] = r.stress;
-    out.wave_speed[i] = r.wave_speed;
-    out.energy_density[i] = r.energy_density;
-    out.plastic_work[i] = 0.0;  // elastic: no dissipation, no internal heating
-    out.heating[i] = 0.0;
-    return true;
-  });
+  return update_elastic_points(in, out, [&](const Eigen::Matrix3d& F, double rho0) { return comp_neo_hookean_point(F, rho0, p_); });
 }
 
 std::optional<SolidEosPoint> CompNeoHookean::pressure_at_density(double rho, double density0, double) const {

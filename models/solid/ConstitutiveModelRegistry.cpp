@@ -23,7 +23,6 @@
 #include "models/solid/Water.h"
 // round 2 (solid-models): MMS / damage variants
 #include "models/solid/CnhDamage.h"
-#include "models/solid/HypoElasticMms.h"
 
 namespace tephra {
 
@@ -52,7 +51,7 @@ const std::map<std::string, Creator>& creators() {
       {"water", &Water::create},
       // round 2 (solid-models): MMS / damage variants
       {"cnh_damage", &CnhDamage::create},
-      {"hypo_elastic_mms", &HypoElasticMms::create},
+      {"hypo_elastic_mms", &HypoElastic::create_mms},
   };
   return table;
 }

@@ -64,15 +64,21 @@ std::optional<double> HypoElastic::density_at_pressure(double p_gauge, double de
   return density0 / x;
 }
 
-ConstitutiveModelP HypoElastic::create(const ModelParameters& params) {
+ConstitutiveModelP HypoElastic::create_named(const ModelParameters& params, const std::string& type) {
   HypoElasticParams p;
   p.G = params.get_double("G");
   p.K = params.get_double("K");
   if (!(p.G > 0.0)) params.fail("G", "G (shear modulus) must be > 0");
   if (!(p.K > 0.0)) params.fail("K", "K (bulk modulus) must be > 0");
   if (params.get_double("alpha", 0.0) != 0.0)
-    params.missing_feature("alpha", "hypo_elastic thermal stress (alpha != 0)");
-  return std::make_shared<HypoElastic>(p);
+    params.missing_feature("alpha", type + " thermal stress (alpha != 0)");
+  return std::make_shared<HypoElastic>(p, type);
+}
+
+ConstitutiveModelP HypoElastic::create(const ModelParameters& params) { return create_named(params, "hypo_elastic"); }
+
+ConstitutiveModelP HypoElastic::create_mms(const ModelParameters& params) {
+  return create_named(params, "hypo_elastic_mms");
 }
 
 }  // namespace tephra

@@ -31,6 +31,9 @@
 // proportional small-strain path).
 // Parameters (Vaango names): <G>, <K> [Pa] required; <alpha> (thermal expansion,
 // default 0) only 0 (thermal strain needs a temperature rate: MissingFeature).
+#include <string>
+#include <utility>
+
 #include <Eigen/Core>
 
 #include "models/solid/ConstitutiveModel.h"
@@ -49,10 +52,15 @@ SolidPointResult hypo_elastic_point(const Eigen::Matrix3d& F_old, const Eigen::M
 
 class HypoElastic final : public ConstitutiveModel {
  public:
-  explicit HypoElastic(const HypoElasticParams& p) : p_(p) {}
+  explicit HypoElastic(const HypoElasticParams& p, std::string type = "hypo_elastic")
+      : p_(p), type_(std::move(type)) {}
   static ConstitutiveModelP create(const ModelParameters& params);
+  // Vaango's "hypo_elastic_mms" (VT ch. 2 list item 10, the hypoelastic solid
+  // of the MMS decks): the seed gives it no equation of its own; Tephra uses
+  // this law under that type name, the same parameters (G, K, alpha = 0).
+  static ConstitutiveModelP create_mms(const ModelParameters& params);
 
-  std::string type() const override { return "hypo_elastic"; }
+  std::string type() const override { return type_; }
   long update(const SolidUpdateInput& in, const SolidUpdateOutput& out) const override;
   double bulk_modulus() const override { return p_.K; }
   double shear_modulus() const override { return p_.G; }
@@ -64,7 +72,9 @@ class HypoElastic final : public ConstitutiveModel {
   std::optional<double> density_at_pressure(double p_gauge, double density0, double T) const override;
 
  private:
+  static ConstitutiveModelP create_named(const ModelParameters& params, const std::string& type);
   HypoElasticParams p_;
+  std::string type_;  // "hypo_elastic" or "hypo_elastic_mms"
 };
 
 }  // namespace tephra

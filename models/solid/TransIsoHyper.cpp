@@ -7,7 +7,7 @@
 #include <Eigen/LU>
 
 #include "models/ModelParameters.h"
-#include "models/solid/PointLoop.h"
+#include "models/solid/ElasticPointLoop.h"
 
 namespace tephra {
 
@@ -62,18 +62,7 @@ SolidPointResult trans_iso_hyper_point(const Eigen::Matrix3d& F, double density0
 }
 
 long TransIsoHyper::update(const SolidUpdateInput& in, const SolidUpdateOutput& out) const {
-  return for_each_point(in.F_new.size(), [&](size_t i) {
-    const double J = in.F_new[i].determinant();
-    if (!(J > 0.0) || !std::isfinite(J)) return false;
-    const SolidPointResult r = trans_iso_hyper_point(in.F_new[i], in.density0, p_);
-    if (!r.stress.allFinite() || !std::isfinite(r.energy_density)) return false;
-    out.stress[i] = r.stress;
-    out.wave_speed[i] = r.wave_speed;
-    out.energy_density[i] = r.energy_density;
-    out.plastic_work[i] = 0.0;
-    out.heating[i] = 0.0;
-    return true;
-  });
+  return update_elastic_points(in, out, [&](const Eigen::Matrix3d& F, double rho0) { return trans_iso_hyper_point(F, rho0, p_); });
 }
 
 ConstitutiveModelP TransIsoHyper::create(const ModelParameters& params) {

@@ -1,4 +1,4 @@
-// hypo_elastic_mms (models/solid/HypoElasticMms.h): hypo_elastic's law (VT eq. 4.2,
+// hypo_elastic_mms (HypoElastic::create_mms in models/solid/HypoElastic.h): hypo_elastic's law (VT eq. 4.2,
 // Green-Naghdi rate) under Vaango's MMS type name, created through the registry.
 #include <gtest/gtest.h>
 
