@@ -107,8 +107,8 @@ class FaceField : public GridArray<T> {
 };
 
 // One field per patch of a grid, in the grid's patch order (field n belongs
-// to grid.patches[n]). A later MPI build holds only the local patches and
-// keeps their ids in patch_id().
+// to grid.patches[n]), or the fields of a subset of the patches (an MPI
+// rank's own; patch_index(n) says which).
 template <class FieldT>
 class PatchFields {
  public:
@@ -119,6 +119,14 @@ class PatchFields {
   PatchFields(const Grid& grid, int ghosts) : grid_(&grid), ghosts_(ghosts) {
     fields_.reserve(grid.patches.size());
     for (const Patch& p : grid.patches) fields_.emplace_back(p, ghosts);
+    for (size_t n = 0; n < grid.patches.size(); ++n) patch_index_.push_back(int(n));
+  }
+  // The fields of some patches only (an MPI rank's own patches, in the order
+  // given): field n belongs to grid.patches[patch_indices[n]].
+  PatchFields(const Grid& grid, int ghosts, const std::vector<int>& patch_indices)
+      : grid_(&grid), ghosts_(ghosts), patch_index_(patch_indices) {
+    fields_.reserve(patch_indices.size());
+    for (int p : patch_indices) fields_.emplace_back(grid.patches[size_t(p)], ghosts);
   }
 
   FieldT& operator[](size_t n) { return fields_[n]; }
@@ -131,6 +139,11 @@ class PatchFields {
 
   const Grid& grid() const { return *grid_; }
   int ghost_width() const { return ghosts_; }
+  // Index into grid.patches of field n.
+  int patch_index(size_t n) const { return patch_index_[n]; }
+  // True when the fields cover every patch of the grid in grid order.
+  bool holds_all_patches() const { return grid_ && fields_.size() == grid_->patches.size() &&
+                                           std::is_sorted(patch_index_.begin(), patch_index_.end()); }
   void fill(const value_type& v) {
     for (FieldT& f : fields_) f.fill(v);
   }
@@ -139,6 +152,7 @@ class PatchFields {
   const Grid* grid_ = nullptr;
   int ghosts_ = 0;
   std::vector<FieldT> fields_;
+  std::vector<int> patch_index_;
 };
 
 }  // namespace tephra
