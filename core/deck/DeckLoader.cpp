@@ -31,8 +31,16 @@ struct Loader {
     pugi::xml_parse_result r = doc.load_buffer(source.data(), source.size(),
                                                pugi::parse_default, pugi::encoding_auto);
     if (!r) {
-      throw DeckError({file, line_of(source, r.offset), ""},
-                      std::string("malformed XML: ") + r.description());
+      std::string why = std::string("malformed XML: ") + r.description();
+      // A symbolic link checked out as a plain file (git without symlink
+      // support) holds just the target path: say so instead of only "no
+      // document element".
+      const std::string trimmed = source.substr(0, source.find_last_not_of(" \t\r\n") + 1);
+      if (!trimmed.empty() && trimmed.size() < 4096 && trimmed.find('<') == std::string::npos &&
+          trimmed.find('\n') == std::string::npos)
+        why += "; the file holds only the text '" + trimmed +
+               "' (a symbolic link stored as a plain file? open the file it names)";
+      throw DeckError({file, line_of(source, r.offset), ""}, why);
     }
     pugi::xml_node root = doc.document_element();
     if (!root) throw DeckError({file, 1, ""}, "no root element");

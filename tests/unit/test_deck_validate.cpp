@@ -97,6 +97,20 @@ TEST(DeckValidate, TruncatedXml) {
   EXPECT_TRUE(says(e, "malformed XML")) << e.what();
 }
 
+// ../shared/decks/orderAccuracy/MPM/AA.ups is a symbolic link stored as a
+// plain file: its whole text is the target path. The error names the file
+// and says what it holds.
+TEST(DeckValidate, SymlinkStoredAsTextIsNamed) {
+  DeckError e = expect_error("../../../StandAlone/inputs/MPM/AA.ups");
+  EXPECT_EQ(e.where().file, "bad.ups");
+  EXPECT_TRUE(says(e, "malformed XML")) << e.what();
+  EXPECT_TRUE(says(e, "'../../../StandAlone/inputs/MPM/AA.ups'")) << e.what();
+  EXPECT_TRUE(says(e, "symbolic link")) << e.what();
+  // A truncated real deck does not get the remark.
+  DeckError t = expect_error(kBase.substr(0, 200));
+  EXPECT_FALSE(says(t, "symbolic link")) << t.what();
+}
+
 TEST(DeckValidate, EmptyFile) {
   DeckError e = expect_error("");
   EXPECT_EQ(e.where().file, "bad.ups");
