@@ -23,6 +23,8 @@
 #include "models/solid/Water.h"
 // round 2 (solid-models): MMS / damage variants
 #include "models/solid/CnhDamage.h"
+#include "models/geo/CamClay.h"  // solids-geo
+#include "models/geo/MohrCoulomb.h"  // solids-geo
 
 namespace tephra {
 
@@ -52,6 +54,8 @@ const std::map<std::string, Creator>& creators() {
       // round 2 (solid-models): MMS / damage variants
       {"cnh_damage", &CnhDamage::create},
       {"hypo_elastic_mms", &HypoElastic::create_mms},
+      {"camclay", &CamClay::create},  // solids-geo (VT ch. 20)
+      {"mohr_coulomb", &MohrCoulomb::create},  // solids-geo (VT ch. 19)
   };
   return table;
 }

@@ -116,6 +116,15 @@ inline const std::map<std::string, std::map<std::string, double>>& sample_solid_
       {"trans_iso_hyper", {{"bulk_modulus", 8.0e9}, {"c1", 1.0e9}, {"c2", 0.5e9}, {"c3", 1e-3}, {"c4", 3.0},
                            {"c5", 1e-2}, {"fiber_stretch", 1.1}, {"max_fiber_strain", 2.0},
                            {"max_matrix_strain", 2.0}, {"failure_option", 0.0}}},
+      // ---- geomaterials (solids-geo). Cam-Clay: a clay at p = -100 kPa (K = -p/kt = 1 MPa,
+      // G = mu0 + alpha |p0| = 5.5 MPa), over-consolidated to p_c = -200 kPa (the reference
+      // state is the critical-state point of the ellipse); sub-model blocks in add_sample_blocks.
+      // kt = 0.1: p ~ exp(-eps_v/kt), so the contracts' central differences of dp/drho
+      // (h = 1e-4 rho) keep their truncation error (h/(kt rho))^2/6 below 1e-6.
+      {"camclay", {}},
+      // Mohr-Coulomb (classic): K = 8 GPa, G = 3 GPa, c = 10 MPa, phi = 30, psi = 10 degrees (blocks
+      // in add_sample_blocks): elastic below shear strains ~1e-3, plastic on the contracts' large paths.
+      {"mohr_coulomb", {}},
   };
   return table;
 }
@@ -126,6 +135,22 @@ inline const std::map<std::string, std::map<std::string, double>>& sample_solid_
 inline void add_sample_blocks(const std::string& type, MapModelParameters& p) {
   if (type == "visco_scram") p.enclosing = {{"specific_heat", 996.0}};  // heating needs c_v
   if (type == "trans_iso_hyper") p.strings["direction_of_symm"] = "[0.6, 0.8, 0]";
+  if (type == "mohr_coulomb") {
+    p.strings["model_type"] = "classic";
+    p.add_block("model_parameters", "",
+                {{"shear_modulus", 3.0e9}, {"bulk_modulus", 8.0e9}, {"cohesion", 1.0e7},
+                 {"angle_internal_friction", 30.0}, {"angle_dilation", 10.0}});
+    p.add_block("integration_parameters", "");
+    return;
+  }
+  if (type == "camclay") {
+    p.add_block("equation_of_state", "borja_pressure",
+                {{"p0", -1.0e5}, {"alpha", 5.0}, {"kappatilde", 0.1}, {"epse_v0", 0.0}});
+    p.add_block("shear_modulus_model", "borja_shear", {{"mu0", 5.0e6}});
+    p.add_block("yield_condition", "camclay", {{"M", 1.2}});
+    p.add_block("internal_variable_model", "borja_consolidation_pressure", {{"pc0", -2.0e5}, {"lambdatilde", 0.4}});
+    return;
+  }
   if (type != "elastic_plastic_hp" && type != "elastic_plastic") return;
   p.add_block("yield_condition", "von_mises");
   p.add_block("flow_model", "linear", {{"sigma_0", 3.0e7}, {"K", 1.0e8}});
@@ -139,6 +164,10 @@ inline void add_sample_blocks(const std::string& type, MapModelParameters& p) {
 //    not the mechanical p(J): no p(rho0) = 0 / dp/drho = K/rho0 reference checks.
 inline bool sample_is_tensionless(const std::string& type) { return type == "ideal_gas"; }
 inline bool sample_has_thermal_hooks(const std::string& type) { return type == "ideal_gas"; }
+//  prestressed: the reference state (F = I, no history) carries an isotropic stress
+//    sigma_0 = p(0) I (camclay: Borja's p = p0 exp(eps_v0/kt) != 0, VT §20.2.1); the
+//    contracts check sigma - sigma_0 and that sigma_0 is isotropic and kept.
+inline bool sample_is_prestressed(const std::string& type) { return type == "camclay"; }
 
 inline ConstitutiveModelP make_sample_model(const std::string& type) {
   MapModelParameters p(sample_solid_parameters().at(type));
