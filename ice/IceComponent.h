@@ -62,6 +62,12 @@ class IceComponent final : public Component {
   // The Lagrangian velocity and temperature after exchange of material m (last step).
   const CellVectors& lagrangian_velocity(std::size_t m) const { return vel_L_[m]; }
   const CellScalars& lagrangian_temperature(std::size_t m) const { return temp_L_[m]; }
+  // The mass [kg] of lagrangian material m crossing each face during the
+  // coming step (signed, + along the axis), from the particles' motion
+  // (mpmice/SolidVolumeFlux.cpp), set before coupled_pressure_phases. Once
+  // set, delP uses it for m, and the fluids cross the faces through the area
+  // the solids leave (IceLagrangianFlux.cpp).
+  FaceScalars& lagrangian_mass_flux(std::size_t m);
 
  private:
   // Phases of the step (IceStep.cpp), in order.
@@ -96,6 +102,10 @@ class IceComponent final : public Component {
     std::string why;
   };
 
+  // MPMICE volume fluxes (IceLagrangianFlux.cpp).
+  bool has_lagrangian_flux(std::size_t m) const;
+  void lagrangian_volume_flux(std::size_t m, FaceScalars& flux) const;
+  void scale_fluid_flux(std::size_t m, double dt, FaceScalars& flux);
   void fluids_fill_volume_left_by_solids();  // MPMICE initial state (IceComponent.cpp)
   void apply_state_bcs(std::size_t m);  // rho, vel, temp, sp_vol extra cells of material m
   // LODI faces (IceLodiBcs.cpp, ice/Lodi.h): the pressure, the Lagrangian
@@ -136,6 +146,9 @@ class IceComponent final : public Component {
   CellScalars delP_MassX_, scalar_L_;
   double time_ = 0;
   std::function<void(IceComponent&)> lagrangian_fill_;  // MPMICE: solid cell state from the particles
+  std::vector<FaceScalars> lag_mass_flux_;  // MPMICE: per material (empty for fluids), lagrangian_mass_flux()
+  FaceScalars lag_chi_;                     // MPMICE: scratch of scale_fluid_flux
+  CellScalars lag_limit_;
 };
 
 // The ICE part of a deck (make_ice_component), with `solids` (an MPMICE run's

@@ -207,7 +207,12 @@ void IceComponent::sum_volume_flux_and_kappa(double dt) {
   sum_kappa_.fill(0.0);
   for (std::size_t m = 0; m < mats_.size(); ++m) {
     IceMaterialFields& f = mats_[m];
-    density_fluxes(g, setup_.advection, f.vol_frac_CC, f.vel_FCME, dt, flux_);
+    if (has_lagrangian_flux(m)) {
+      lagrangian_volume_flux(m, flux_);  // MPMICE solid: from the particles (IceLagrangianFlux.cpp)
+    } else {
+      density_fluxes(g, setup_.advection, f.vol_frac_CC, f.vel_FCME, dt, flux_);
+      scale_fluid_flux(m, dt, flux_);  // MPMICE: the face area the solids leave
+    }
     flux_divergence(g, flux_, dq_);
     for (std::size_t pi = 0; pi < g.patches.size(); ++pi)
       for_each_cell(g.patches[pi].cells(), [&](int i, int j, int k) {
@@ -492,6 +497,7 @@ void IceComponent::advect_and_advance(double dt, int step) {
     check_outflux(g, f.vel_FCME, dt, step);
     // Mass first; its face fluxes carry the specific quantities.
     density_fluxes(g, setup_.advection, mass_L_[m], f.vel_FCME, dt, flux_);
+    scale_fluid_flux(m, dt, flux_);  // MPMICE: the face area the solids leave (IceLagrangianFlux.cpp)
     flux_divergence(g, flux_, dq_);
     specific_fluxes(g, setup_.advection, vel_L_[m], f.vel_FCME, flux_, dt, flux_v_);
     flux_divergence(g, flux_v_, dqv_);

@@ -52,6 +52,7 @@ void MpmIceComponent::advance(double t, double dt, int step) { mpm_->advance(t, 
 void MpmIceComponent::after_interpolate_to_grid(double, double dt, int step) {
   PhaseTimers& T = phase_timers();
   { PhaseTimers::Scope s(T, "MPMICE: nodes to cells");        solid_state_to_cells(); }
+  { PhaseTimers::Scope s(T, "MPMICE: solid volume fluxes");   solid_mass_fluxes(dt); }
   ice_->coupled_pressure_phases(dt, step);
   { PhaseTimers::Scope s(T, "MPMICE: pressure to particles"); pressure_to_particles(); }
 }

@@ -46,6 +46,7 @@ class MpmIceComponent final : public Component, private MpmCoupling {
 
   // The phases of the coupled step (MpmIceTransfers.cpp).
   void solid_state_to_cells();                 // step 1: nodes -> cells, rho_micro from the solid EOS
+  void solid_mass_fluxes(double dt);           // step 1: the solids' face mass fluxes of the step (SolidVolumeFlux.cpp)
   void pressure_to_particles();                // step 7: p_CC -> nodes -> particles
   void cell_changes_to_nodes_and_particles();  // step 13: dv_CC -> v*_g, dT_CC -> T_p
 
@@ -53,6 +54,8 @@ class MpmIceComponent final : public Component, private MpmCoupling {
   std::unique_ptr<IceComponent> ice_;
   double p_ref_;
   std::vector<std::vector<double>> particle_pressure_;  // per MPM material: p_p - p_ref
+  Particles flux_particles_;  // scratch of solid_mass_fluxes
+  NodeGrid flux_grid_;
 };
 
 // Reads an <SimulationComponent type="mpmice"> deck: the MPM parts

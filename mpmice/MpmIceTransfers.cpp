@@ -4,27 +4,19 @@
 //
 // Node <-> cell: a cell's value is the equal-weight (1/8) average of its 8
 // corner nodes, a node's value the 1/8 average of its 8 adjacent cells.
-// Departure: the manual doubles the weight of nodes on symmetry planes; not
-// done yet (no symmetry BCs are accepted with MPM materials in MPMICE decks
-// yet - see docs/mpmice.md).
+// A node on a symmetry plane weighs double per plane (mpmice/CellProjection.h).
 #include <array>
 #include <algorithm>
 #include <cmath>
 
 #include "core/grid/Loop.h"
+#include "mpmice/CellProjection.h"
 #include "mpmice/MpmIceComponent.h"
 #include "mpm/shape/AxisStencils.h"
 
 namespace tephra {
 
 namespace {
-
-// The node index offset of cell c's lower corner: node = c + offset.
-IntVec3 node_offset(const Grid& g, const NodeGrid& ng) {
-  IntVec3 o;
-  for (int d = 0; d < 3; ++d) o[d] = int(std::lround((g.lower[d] - ng.origin[d]) / ng.h[d]));
-  return o;
-}
 
 // The patch whose cells (with extra cells) hold c; c clamped into
 // [lo, hi) first (zero-gradient extension for nodes on the outer layer).
@@ -76,8 +68,7 @@ void MpmIceComponent::solid_state_to_cells() {
         view.weights(i, [&](std::size_t gi, double w) { mT[gi] += p.mass[i] * p.temperature[i] * w; });
     });
     const IntVec3 off = node_offset(g, ng);
-    std::array<bool, 6> symmetric{};
-    for (int fc = 0; fc < 6; ++fc) symmetric[fc] = mm.bcs.face[fc].kind == FaceVelocityBC::Kind::Symmetry;
+    const std::array<bool, 6> symmetric = symmetry_faces(mm.bcs);
     const IceMaterialSpec& spec = is.materials[s];
     const double min_mass = spec.tiny_rho * mm.density * V;
     IceMaterialFields& f = fields[s];
@@ -102,14 +93,11 @@ void MpmIceComponent::solid_state_to_cells() {
           // so its weight doubles per plane it lies on (x4 on an edge of two
           // planes), and its momentum normal to the plane is zero (the image
           // particles' normal velocities cancel the real ones').
-          double w = 0.125;
+          bool on_plane[3];
+          const double w = node_cell_weight(ng, symmetric, node, on_plane);
           Vec3 v = ng.velocity[gi];
           for (int d = 0; d < 3; ++d)
-            if ((symmetric[2 * d] && node[d] == ng.extra[d]) ||
-                (symmetric[2 * d + 1] && node[d] == ng.n[d] - 1 - ng.extra[d])) {
-              w *= 2;
-              v[d] = 0;
-            }
+            if (on_plane[d]) v[d] = 0;
           M += w * ng.mass[gi];
           P += w * ng.mass[gi] * v;
           MT += w * mT[gi];
@@ -120,7 +108,22 @@ void MpmIceComponent::solid_state_to_cells() {
           u = (P / M).cwiseProduct(flip);
           T = MT / M;
         } else {
+          // An absent solid (a trace of tiny_rho rho0) moves and heats with
+          // the fluids of the cell (their mass-weighted u and T), so that its
+          // exchange terms K theta_s theta_f (u_s - u_f) vanish: it must not
+          // drag the fluid it is absent from.
           M = min_mass;
+          double mf = 0;
+          Vec3 pf = Vec3::Zero();
+          double tf = 0;
+          for (std::size_t q = 0; q < fields.size(); ++q) {
+            if (is.materials[q].lagrangian) continue;
+            const double r = fields[q].rho_CC[pi](c);
+            mf += r;
+            pf += r * fields[q].vel_CC[pi](c);
+            tf += r * fields[q].temp_CC[pi](c);
+          }
+          if (mf > 0) u = pf / mf, T = tf / mf;
         }
         f.rho_CC[pi](c) = M / V;
         f.vel_CC[pi](c) = u;

@@ -1,0 +1,150 @@
+// MPMICE: the solids' volume fluxes from the particles and the fluids' share
+// of each face (docs/mpmice.md "Volume fluxes"). A lagrangian (MPM) material
+// is not advected by ICE; its cell mass is projected from the particles every
+// step. The volume it moves through a face during the step therefore comes
+// from the particles' motion (mpmice/SolidVolumeFlux.cpp fills
+// lagrangian_mass_flux), not from a donor-cell flux of its projected volume
+// fraction: with the donor-cell flux the solid's next projected theta_s and
+// the fluids' advected theta_f disagree, and the difference is made up by
+// compressing the fluid (the advect.ups pressure drift, the piston's
+// swallowed air; measured in docs/mpmice.md).
+//
+// With F_s the solid's volume (in cell volumes) crossing a face of normal
+// velocity u_s, the solid covers the face fraction
+//   theta_s,face = F_s / (u_s dt / dx),   clamped to [0, 1],
+// and a fluid m crosses through the rest of the face, in proportion to its
+// share of the fluid volume of its donor cell D:
+//   F_m = (u_m dt / dx) (1 - sum_s theta_s,face) theta_m,D / sum_fluids theta_D.
+// The donor-cell flux is (u_m dt/dx) theta_m,D, so the fluid's flux (of mass,
+// volume fraction, and the specific quantities carried with the mass) is the
+// donor-cell flux times
+//   chi = (1 - sum_s theta_s,face) / sum_fluids theta_D.
+// Identity (the exact answer of MPMICE/advect.ups): with every material at the
+// same u, sum_m F_m + sum_s F_s = u dt/dx on every face, so the volume
+// fractions keep summing to 1 without a pressure change (delP = 0), and a
+// uniform fluid state stays uniform while the solid moves through it.
+#include <algorithm>
+#include <cmath>
+
+#include "core/grid/Loop.h"
+#include "ice/IceComponent.h"
+
+namespace tephra {
+
+namespace {
+IndexRange faces_of(const Patch& p, int d) { return {p.lo, p.hi + IntVec3::Unit(d)}; }
+}  // namespace
+
+FaceScalars& IceComponent::lagrangian_mass_flux(std::size_t m) {
+  if (lag_mass_flux_.size() != mats_.size()) lag_mass_flux_.resize(mats_.size());
+  if (lag_mass_flux_[m].x.size() == 0) lag_mass_flux_[m] = FaceScalars(setup_.grid, 0);
+  return lag_mass_flux_[m];
+}
+
+bool IceComponent::has_lagrangian_flux(std::size_t m) const {
+  return m < lag_mass_flux_.size() && lag_mass_flux_[m].x.size() != 0;
+}
+
+// F_theta = F_M v_D / V, v_D the specific volume of the donor cell of the
+// mass flux (the cell the mass leaves).
+void IceComponent::lagrangian_volume_flux(std::size_t m, FaceScalars& flux) const {
+  const Grid& g = setup_.grid;
+  const double inv_V = 1.0 / g.cell_volume();
+  const IceMaterialFields& f = mats_[m];
+  for (std::size_t pi = 0; pi < g.patches.size(); ++pi)
+    for (int d = 0; d < 3; ++d) {
+      const GridArray<double>& FM = lag_mass_flux_[m].at(d, pi);
+      GridArray<double>& out = flux.at(d, pi);
+      const GridArray<double>& v = f.sp_vol_CC[pi];
+      const IntVec3 e = IntVec3::Unit(d);
+      for_each_cell(faces_of(g.patches[pi], d), [&](int i, int j, int k) {
+        const IntVec3 R(i, j, k);
+        const double F = FM(R);
+        out(R) = F * (F > 0 ? v(IntVec3(R - e)) : v(R)) * inv_V;
+      });
+    }
+}
+
+// flux *= chi (above) on every face, for fluid m, with a positivity limit:
+// where the scaled outflow of a donor cell, sum_out phi chi (in units of its
+// content), exceeds max(1/2, sum_out phi) its outgoing chi are scaled down to
+// that bound. chi > 1 (a fluid leaving through more face area than its share
+// of the donor cell) cannot then empty a cell in one step; the bound is far
+// from active in a smooth flow (sum_out phi ~ the CFL number) and acts in
+// cells where a trace of fluid sits inside a solid (theta_f ~ tiny_rho), whose
+// chi = (1 - theta_s,face)/theta_f is round-off over round-off.
+void IceComponent::scale_fluid_flux(std::size_t m, double dt, FaceScalars& flux) {
+  if (setup_.materials[m].lagrangian) return;
+  const Grid& g = setup_.grid;
+  const std::size_t nm = mats_.size();
+  std::vector<std::size_t> solids;
+  for (std::size_t s = 0; s < nm; ++s)
+    if (has_lagrangian_flux(s)) solids.push_back(s);
+  if (solids.empty()) return;
+  if (lag_chi_.x.size() == 0) {
+    lag_chi_ = FaceScalars(g, 0);
+    lag_limit_ = CellScalars(g, 2);
+  }
+  const double inv_V = 1.0 / g.cell_volume();
+  const FaceScalars& u = mats_[m].vel_FCME;
+  for (std::size_t pi = 0; pi < g.patches.size(); ++pi)
+    for (int d = 0; d < 3; ++d) {
+      const IntVec3 e = IntVec3::Unit(d);
+      const double dt_dx = dt / g.dx[d];
+      GridArray<double>& chi = lag_chi_.at(d, pi);
+      const GridArray<double>& um = u.at(d, pi);
+      for_each_cell(faces_of(g.patches[pi], d), [&](int i, int j, int k) {
+        const IntVec3 R(i, j, k), L = R - e;
+        double theta_face = 0;
+        for (std::size_t s : solids) {
+          const IceMaterialFields& fs = mats_[s];
+          const double FM = lag_mass_flux_[s].at(d, pi)(R);
+          if (FM == 0.0) continue;
+          const double Fv = FM * (FM > 0 ? fs.sp_vol_CC[pi](L) : fs.sp_vol_CC[pi](R)) * inv_V;
+          const double phi = fs.vel_FCME.at(d, pi)(R) * dt_dx;  // signed
+          // The face fraction of a flux against the face velocity is 0 (a
+          // round-off flux at the end of a row); a face whose solid face
+          // velocity is ~0 (the fluids locked to it hardly cross it) takes
+          // the mean of the two cells' solid fractions.
+          const double t = std::abs(phi) > 1e-14 ? Fv / phi : 0.5 * (fs.vol_frac_CC[pi](L) + fs.vol_frac_CC[pi](R));
+          theta_face += std::clamp(t, 0.0, 1.0);
+        }
+        theta_face = std::min(theta_face, 1.0);
+        const IntVec3 D = um(R) > 0 ? L : R;
+        double fluid = 0;
+        for (std::size_t q = 0; q < nm; ++q)
+          if (!setup_.materials[q].lagrangian) fluid += mats_[q].vol_frac_CC[pi](D);
+        chi(R) = (1.0 - theta_face) / fluid;
+      });
+    }
+  // The positivity limit of each interior donor cell (1 where inactive).
+  lag_limit_.fill(1.0);
+  for (std::size_t pi = 0; pi < g.patches.size(); ++pi)
+    for_each_cell(g.patches[pi].cells(), [&](int i, int j, int k) {
+      const IntVec3 c(i, j, k);
+      double out = 0, out_scaled = 0;
+      for (int d = 0; d < 3; ++d) {
+        const IntVec3 hi = c + IntVec3::Unit(d);
+        const double phi_lo = -u.at(d, pi)(c) * dt / g.dx[d], phi_hi = u.at(d, pi)(hi) * dt / g.dx[d];
+        if (phi_lo > 0) out += phi_lo, out_scaled += phi_lo * lag_chi_.at(d, pi)(c);
+        if (phi_hi > 0) out += phi_hi, out_scaled += phi_hi * lag_chi_.at(d, pi)(hi);
+      }
+      const double bound = std::max(0.5, out);
+      if (out_scaled > bound) lag_limit_[pi](c) = bound / out_scaled;
+    });
+  halo_->exchange(lag_limit_);
+  for (std::size_t pi = 0; pi < g.patches.size(); ++pi)
+    for (int d = 0; d < 3; ++d) {
+      const IntVec3 e = IntVec3::Unit(d);
+      GridArray<double>& F = flux.at(d, pi);
+      const GridArray<double>& chi = lag_chi_.at(d, pi);
+      const GridArray<double>& um = u.at(d, pi);
+      for_each_cell(faces_of(g.patches[pi], d), [&](int i, int j, int k) {
+        const IntVec3 R(i, j, k);
+        const IntVec3 D = um(R) > 0 ? IntVec3(R - e) : R;
+        F(R) *= chi(R) * lag_limit_[pi](D);
+      });
+    }
+}
+
+}  // namespace tephra
