@@ -43,7 +43,11 @@
 // [0, sqrt(3/2)(|s_trial| + |β_n|)/(3μ)]; s_{n+1} = s_trial - 2μ Δε^p. Without kinematic
 // hardening β = 0 and this is the radial return above. Heating and plastic work use
 // σ:Δε^p (VT eq. 12.14), which is σ_y Δ without a backstress.
-// MissingFeature: kinematic hardening with a porous yield or a stability check,
+// MTS flow: the structure stress σ_e is history ("mtsStructureStress"), σ_e = σ_e,n + θ(σ_e,n) Δ
+// inside the return (the flow model's ∂σ_y/∂ε_p carries S_e θ μ/μ_0), as in elastic_plastic.
+// Stability checks with kinematic hardening use the J2 tangent on n̂ = ξ/|ξ| with the modulus
+// H = ∂σ_y/∂ε_p + H_1 - 3/2 H_2 β:n̂ (KinematicHardeningModel::j2_modulus).
+// MissingFeature: kinematic hardening or MTS with a porous yield,
 // coeff_thermal_expansion != 0, deviatoric_stress_model other than hypoElastic.
 #include <memory>
 
@@ -80,7 +84,7 @@ class ElasticPlasticHP final : public ConstitutiveModel {
   std::optional<double> density_at_pressure(double p_gauge, double density0, double T) const override;
 
   // The point update (what update() does for one point; unit tests call it).
-  // hist = {ε_p, ε̇_p, φ, D, localized, [ln J^p], [drawn], [β (9, row-major)]} (flat),
+  // hist = {ε_p, ε̇_p, φ, D, localized, [ln J^p], [drawn], [σ_e], [β (9, row-major)]} (flat),
   // read at t_n and overwritten with t_{n+1}.
   using PointOut = MetalPointOut;
   bool update_point(const Eigen::Matrix3d& F_old, const Eigen::Matrix3d& F_new, const Eigen::Matrix3d& stress_old,
@@ -95,6 +99,7 @@ class ElasticPlasticHP final : public ConstitutiveModel {
   std::shared_ptr<const SpecificHeatModel> cp_;
   std::shared_ptr<const YieldCondition> yield_;  // nullptr: von Mises (radial return)
   std::shared_ptr<const KinematicHardeningModel> kin_;  // nullptr: no backstress
+  int k_sigma_e_ = -1;  // history "mtsStructureStress" (MTS flow only)
   int k_beta_ = -1;   // flat offset of history "backStress" (9 values, last column; kinematic only)
   int k_evp_ = -1;    // history "plasticVolumetricStrain" (porous yield only)
   int k_drawn_ = -1;  // history "initialFieldsDrawn" (Gaussian initial fields only)
