@@ -2,10 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include <Eigen/LU>
 
 #include "models/ModelParameters.h"
+#include "models/plasticity/ContinuumTangent.h"
 #include "models/plasticity/PorousReturn.h"
 #include "models/solid/Kinematics.h"
 #include "models/solid/MetalPointLoop.h"
@@ -175,6 +177,8 @@ bool ElasticPlastic::update_point(const Eigen::Matrix3d& F_old, const Eigen::Mat
   Eigen::Matrix3d s = s_trial;
   double delta = 0.0, sigma_y = 0.0, T_new = T, H = 0.0, work = 0.0, tr_dp = 0.0;
   Eigen::Matrix3d xi = s_trial;  // the returned stress relative to the backstress (flow direction)
+  std::optional<Tangent4> porous_tangent;  // porous yield with a stability check only
+  Eigen::Matrix3d porous_dp = Eigen::Matrix3d::Zero();
   bool melted = false, plastic = false;
 
   // Mechanical mean stress (VT eq. 18.81 without the thermal term): the EOS at J^e = J/J^p
@@ -216,6 +220,10 @@ bool ElasticPlastic::update_point(const Eigen::Matrix3d& F_old, const Eigen::Mat
         tr_dp = r.plastic_strain.trace();
         work = r.stress.cwiseProduct(r.plastic_strain).sum();  // sigma : Delta eps^p = (1 - phi) sigma_y Delta eps_p
         T_new = T + c * work;
+        if (has_stability_check(failure_)) {  // the J2-I1 continuum tangent (VT §18.6.2) at the returned state
+          porous_dp = r.plastic_strain;
+          porous_tangent = yield_continuum_tangent(*yield_, r.stress, r.sigma_y, r.hardening, st.porosity, kappa, mu);
+        }
         hist[k_evp_] += tr_dp;
         if (eos_->type() == "default_hypo") {
           p_mech = r.I1 / 3.0 + 3.0 * kappa * p_.alpha * (T - T0);  // p_tr - kappa tr(Delta eps^p)
@@ -277,7 +285,9 @@ bool ElasticPlastic::update_point(const Eigen::Matrix3d& F_old, const Eigen::Mat
   }
   if (dt > 0.0 && metal_point_failed(failure_, melted, plastic, hist[kPorosity], hist[kDamage], out.r.stress))
     hist[kLocalized] = 1.0;
-  if (plastic && metal_point_unstable(failure_, tau_n, tau, xi, delta, dt, kappa, mu, H)) hist[kLocalized] = 1.0;
+  if (plastic && (porous_tangent ? metal_point_unstable(failure_, tau_n, tau, porous_dp, dt, *porous_tangent)
+                                 : metal_point_unstable(failure_, tau_n, tau, xi, delta, dt, kappa, mu, H)))
+    hist[kLocalized] = 1.0;
   return out.r.stress.allFinite() && std::isfinite(out.heating) && std::isfinite(hist[kDamage]);
 }
 
@@ -364,9 +374,6 @@ ConstitutiveModelP ElasticPlastic::create(const ModelParameters& params) {
   if (yield->type() != "von_mises") {
     m->yield_ = yield;
     m->k_evp_ = k++;
-    if (m->failure_.stability && m->failure_.stability->type() != "none")
-      params.missing_feature("stability_check", name + " stability_check with yield_condition '" + yield->type() +
-                                                    "' (the check uses the J2 tangent)");
   }
   if (m->failure_.random_initial_fields()) m->k_drawn_ = k++;
   // Kinematic hardening (VT ch. 11, eq. 18.47-18.48): the backstress column goes last (flat offset = k).

@@ -4,10 +4,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include <Eigen/LU>
 
 #include "models/ModelParameters.h"
+#include "models/plasticity/ContinuumTangent.h"
 #include "models/plasticity/PorousReturn.h"
 #include "models/solid/Kinematics.h"
 #include "models/solid/MetalPointLoop.h"
@@ -81,6 +83,8 @@ bool ElasticPlasticHP::update_point(const Eigen::Matrix3d& F_old, const Eigen::M
   Eigen::Matrix3d s = s_trial;
   double delta = 0.0, H = 0.0, mean = eos.p, work = 0.0, tr_dp = 0.0;
   Eigen::Matrix3d xi = s_trial;  // returned stress relative to the backstress (flow direction of the tangent)
+  std::optional<Tangent4> porous_tangent;  // porous yield with a stability check only
+  Eigen::Matrix3d porous_dp = Eigen::Matrix3d::Zero();
   const bool melted = p_.do_melting && T >= st.melt_temperature;
   if (melted) {
     s.setZero();
@@ -105,6 +109,10 @@ bool ElasticPlasticHP::update_point(const Eigen::Matrix3d& F_old, const Eigen::M
       s = r.stress - (r.I1 / 3.0) * I;
       tr_dp = r.plastic_strain.trace();
       work = r.stress.cwiseProduct(r.plastic_strain).sum();  // σ : Δε^p = (1 - φ) σ_y Δε_p
+      if (has_stability_check(failure_)) {  // the J2-I1 continuum tangent (VT §18.6.2) at the returned state
+        porous_dp = r.plastic_strain;
+        porous_tangent = yield_continuum_tangent(*yield_, r.stress, r.sigma_y, r.hardening, st.porosity, pr.K, mu);
+      }
       hist[k_evp_] += tr_dp;
       // Mean stress: exact for the rate form (p_tr - K tr Δε^p); others at the new J^e.
       ei.J = J * std::exp(-hist[k_evp_]);
@@ -189,7 +197,9 @@ bool ElasticPlasticHP::update_point(const Eigen::Matrix3d& F_old, const Eigen::M
   }
   if (dt > 0.0 && metal_point_failed(failure_, melted, delta > 0.0, hist[kPorosity], hist[kDamage], out.r.stress))
     hist[kLocalized] = 1.0;
-  if (delta > 0.0 && metal_point_unstable(failure_, tau_n, tau, xi, delta, dt, kappa, mu, H)) hist[kLocalized] = 1.0;
+  if (delta > 0.0 && (porous_tangent ? metal_point_unstable(failure_, tau_n, tau, porous_dp, dt, *porous_tangent)
+                                     : metal_point_unstable(failure_, tau_n, tau, xi, delta, dt, kappa, mu, H)))
+    hist[kLocalized] = 1.0;
   return out.r.stress.allFinite() && std::isfinite(out.heating) && std::isfinite(hist[kDamage]);
 }
 
@@ -263,9 +273,6 @@ ConstitutiveModelP ElasticPlasticHP::create(const ModelParameters& params) {
   if (yield->type() != "von_mises") {
     m->yield_ = yield;
     m->k_evp_ = k++;
-    if (m->failure_.stability && m->failure_.stability->type() != "none")
-      params.missing_feature("stability_check", "elastic_plastic_hp stability_check with yield_condition '" +
-                                                    yield->type() + "' (the check uses the J2 tangent)");
   }
   if (m->failure_.random_initial_fields()) m->k_drawn_ = k++;
   // Kinematic hardening (VT ch. 11): the backstress column goes last (flat offset = k).

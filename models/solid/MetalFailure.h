@@ -95,6 +95,12 @@ void evolve_porosity_and_damage(const MetalFailureParams& f, const Eigen::Matrix
 // + kinematic) hardening modulus of the continuum tangent (models/plasticity/StabilityCheck.h).
 bool metal_point_unstable(const MetalFailureParams& f, const Eigen::Matrix3d& tau_n, const Eigen::Matrix3d& tau,
                           const Eigen::Matrix3d& s, double delta_gamma, double dt, double K, double mu, double H);
+// The same with a given continuum tangent C (a porous yield: the J2-I1 tangent of
+// models/plasticity/ContinuumTangent.h) and the step's plastic strain increment (d^p = Δε^p/dt).
+bool metal_point_unstable(const MetalFailureParams& f, const Eigen::Matrix3d& tau_n, const Eigen::Matrix3d& tau,
+                          const Eigen::Matrix3d& delta_eps_p, double dt, const Tangent4& C);
+// Whether a stability check is configured (the porous branches build their tangent only then).
+inline bool has_stability_check(const MetalFailureParams& f) { return f.stability && f.stability->type() != "none"; }
 
 // The failure tests above (without the stability check).
 bool metal_point_failed(const MetalFailureParams& f, bool melted, bool plastic, double porosity, double damage,
