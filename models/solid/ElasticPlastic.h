@@ -44,7 +44,7 @@
 // /(rho C_p) after it); porosity grows by (1 - phi) tr Delta eps^p; ln J^p is history and the
 // EOS is evaluated at J^e = J/J^p (exact on the returned surface for default_hypo; other EOS
 // are re-evaluated at the new J^e, so f = O(Delta eps_v^2) off it). Stability checks with a
-// porous yield: MissingFeature.
+// porous yield use the J2-I1 continuum tangent (models/plasticity/ContinuumTangent.h, VT §18.6.2).
 // Kinematic hardening (<kinematic_hardening_model> prager / armstrong_frederick, VT ch. 11 and
 // eq. 18.47-18.52) with the von Mises yield: f = sqrt(3/2)|xi| - sigma_y, xi = s - beta, flow
 // Delta eps^p = sqrt(3/2) Dg n, n = xi_{n+1}/|xi_{n+1}|, and the backward Euler of eq. 11.3 (18.48

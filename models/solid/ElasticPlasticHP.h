@@ -31,7 +31,8 @@
 // Yield conditions gurson / rousselier: the two-invariant backward-Euler return of
 // models/plasticity/PorousReturn.h (isothermal in the return, heating χ σ:Δε^p/(ρ C_p Δt)
 // after it; porosity grows by (1 - φ) tr Δε^p); the plastic volume ln J^p is history and the
-// EOS is evaluated at J^e = J/J^p. Stability checks with a porous yield: MissingFeature.
+// EOS is evaluated at J^e = J/J^p. Stability checks with a porous yield use the J2-I1
+// continuum tangent of the returned state (models/plasticity/ContinuumTangent.h, VT §18.6.2).
 // Kinematic hardening (<kinematic_hardening_model> prager / armstrong_frederick, VT ch. 11)
 // with the von Mises yield: f = sqrt(3/2)|ξ| - σ_y, ξ = s - β (VT ch. 8). The backstress β
 // (history "backStress", unrotated frame, deviatoric) follows the backward Euler of eq. 11.3
