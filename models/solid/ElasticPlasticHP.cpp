@@ -232,6 +232,15 @@ ConstitutiveModelP ElasticPlasticHP::create(const ModelParameters& params) {
   params.get_double("initial_material_temperature", 0.0);  // Vaango: reference of the thermal strain (alpha = 0 here)
   if (params.get_double("coeff_thermal_expansion", 0.0) != 0.0)
     params.missing_feature("coeff_thermal_expansion", "elastic_plastic_hp thermal expansion strain (alpha != 0)");
+  if (params.get_bool("useModifiedEOS", false))
+    params.missing_feature("useModifiedEOS", "elastic_plastic_hp with useModifiedEOS = true");
+  // <plastic_convergence_algo> (Vaango: radialReturn by default, biswajit required for gurson): both
+  // select Tephra's returns, which solve the backward-Euler equations of the step to the tolerance
+  // (von Mises: the implicit radial return; porous yields: the two-invariant return), not Vaango's
+  // substepped semi-implicit iteration of Algorithm 1 (docs/models/plasticity.md).
+  const std::string algo = params.get_string("plastic_convergence_algo", "radialReturn");
+  if (algo != "radialReturn" && algo != "biswajit")
+    params.fail("plastic_convergence_algo", "must be radialReturn or biswajit (here '" + algo + "')");
   const std::string dev = assembly::block_type(params, "deviatoric_stress_model");
   if (!dev.empty() && dev != "hypoElastic")
     params.missing_feature("deviatoric_stress_model", "elastic_plastic_hp deviatoric_stress_model '" + dev + "'");

@@ -48,7 +48,8 @@
 // inside the return (the flow model's ∂σ_y/∂ε_p carries S_e θ μ/μ_0), as in elastic_plastic.
 // Stability checks with kinematic hardening use the J2 tangent on n̂ = ξ/|ξ| with the modulus
 // H = ∂σ_y/∂ε_p + H_1 - 3/2 H_2 β:n̂ (KinematicHardeningModel::j2_modulus).
-// MissingFeature: kinematic hardening or MTS with a porous yield,
+// <plastic_convergence_algo> radialReturn / biswajit: both take the returns above.
+// MissingFeature: kinematic hardening or MTS with a porous yield, useModifiedEOS,
 // coeff_thermal_expansion != 0, deviatoric_stress_model other than hypoElastic.
 #include <memory>
 

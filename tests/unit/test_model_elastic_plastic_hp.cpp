@@ -198,6 +198,17 @@ TEST(ElasticPlasticHP, UnimplementedOptionsAreMissingFeatures) {
   auto bad = base();
   bad.add_block("flow_model", "no_such_law");
   EXPECT_THROW(create_constitutive_model("elastic_plastic_hp", bad), std::invalid_argument);
+  auto me = base();
+  me.values["useModifiedEOS"] = 1.0;
+  EXPECT_TRUE(is_missing_feature(me));
+  for (const char* algo : {"radialReturn", "biswajit"}) {  // both take Tephra's returns
+    auto a = base();
+    a.strings["plastic_convergence_algo"] = algo;
+    EXPECT_TRUE(create_constitutive_model("elastic_plastic_hp", a)) << algo;
+  }
+  auto ba = base();
+  ba.strings["plastic_convergence_algo"] = "newton";
+  EXPECT_THROW(create_constitutive_model("elastic_plastic_hp", ba), std::invalid_argument);
 }
 
 }  // namespace
