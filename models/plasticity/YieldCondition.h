@@ -39,6 +39,13 @@ class KinematicHardeningModel {
   Eigen::Matrix3d backstress_after(const Eigen::Matrix3d& beta_n, const Eigen::Matrix3d& delta_eps_p) const {
     return (beta_n + 2.0 / 3.0 * linear_modulus() * delta_eps_p) / (1.0 + recovery_modulus() * delta_eps_p.norm());
   }
+  // The kinematic part of the J2 hardening modulus of the continuum tangent (VT 18.29 term
+  // -∂f/∂β : h^β): with f = sqrt(3/2)|ξ| - σ_y, ξ = s - β, flow ε̇^p = γ̇ sqrt(3/2) n̂ (n̂ = ξ/|ξ|),
+  // sqrt(3/2) n̂ : β̇ = γ̇ (H_lin - 3/2 H_rec β : n̂); 0 for none.
+  double j2_modulus(const Eigen::Matrix3d& beta, const Eigen::Matrix3d& xi) const {
+    const double n = xi.norm();
+    return linear_modulus() - (n > 0.0 ? 1.5 * recovery_modulus() * beta.cwiseProduct(xi).sum() / n : 0.0);
+  }
 };
 
 // Damage, VT ch. 15: the rate Ḋ for the state (ε̇_p, T) and the stress.

@@ -2,10 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include <Eigen/LU>
 
 #include "models/ModelParameters.h"
+#include "models/plasticity/ContinuumTangent.h"
 #include "models/plasticity/PorousReturn.h"
 #include "models/solid/Kinematics.h"
 #include "models/solid/MetalPointLoop.h"
@@ -16,7 +18,7 @@ namespace tephra {
 namespace {
 // The fixed part of the history (history() order); optional columns follow.
 enum HistoryIndex { kEpsP = 0, kEpsPRate, kStrainRate, kPorosity, kDamage, kLocalized, kFixedCount };
-constexpr int kMaxHistory = kFixedCount + 5;
+constexpr int kMaxHistory = kFixedCount + 5 + 9;  // + optional scalars, backStress (9)
 }  // namespace
 
 std::vector<HistoryVariable> ElasticPlastic::history() const {
@@ -35,13 +37,27 @@ std::vector<HistoryVariable> ElasticPlastic::history() const {
   if (k_evp_ >= 0)
     h.push_back({"plasticVolumetricStrain", 1, {0.0}, "ln J^p = sum of tr(Delta eps^p) (porous yield only) [-]"});
   if (k_drawn_ >= 0) h.push_back({"initialFieldsDrawn", 1, {0.0}, "1 once the Gaussian initial porosity/damage is drawn"});
+  if (k_beta_ >= 0)
+    h.push_back({"backStress", 9, std::vector<double>(9, 0.0),
+                 "backstress beta (VT ch. 11, eq. 18.47-18.48), in the unrotated frame of the point [Pa]"});
   return h;
 }
 
 ElasticPlastic::Return ElasticPlastic::plastic_return(double q_trial, double mu, double dt, const PlasticState& st,
                                                       double c) const {
+  // Without a backstress the return depends on s_trial through q_trial only: any deviator of that norm.
+  Eigen::Matrix3d s_trial = Eigen::Matrix3d::Zero();
+  s_trial(0, 0) = std::sqrt(2.0 / 3.0) * q_trial / std::sqrt(1.5);
+  s_trial(1, 1) = s_trial(2, 2) = -0.5 * s_trial(0, 0);
+  return plastic_return(s_trial, Eigen::Matrix3d::Zero(), mu, dt, st, c);
+}
+
+ElasticPlastic::Return ElasticPlastic::plastic_return(const Eigen::Matrix3d& s_trial, const Eigen::Matrix3d& beta_n,
+                                                      double mu, double dt, const PlasticState& st, double c) const {
   Return r;
   const double eps_n = st.eps_p, T_n = st.temperature;
+  const double k32 = std::sqrt(1.5);
+  const double H1 = kin_ ? kin_->linear_modulus() : 0.0, H2 = kin_ ? kin_->recovery_modulus() : 0.0;
   PlasticState s = st;
   FlowStress y;
   // sigma_y and its derivatives at (Dg, T); MTS: sigma_e = sigma_e,n + theta Dg.
@@ -70,21 +86,33 @@ ElasticPlastic::Return ElasticPlastic::plastic_return(double q_trial, double mu,
     const double H = y.d_eps_p + y.d_eps_p_rate / dt;
     return c > 0.0 ? c * (y.sigma_y + dg * H) / (1.0 - dg * c * y.d_T) : 0.0;
   };
+  // The backstress part (header): a(Dg) = 1/(1 + sqrt(3/2) H2 Dg), xi*(Dg) = s_trial - a beta_n,
+  // q*(Dg) = sqrt(3/2)|xi*|; the residual is q* - (3 mu + a H1) Dg - sigma_y.
+  auto q_star = [&](double dg, double& dq) {
+    const double a = 1.0 / (1.0 + k32 * H2 * dg), da = -k32 * H2 * a * a;
+    const Eigen::Matrix3d xs = s_trial - a * beta_n;
+    const double n = xs.norm();
+    dq = n > 0.0 ? -da * k32 * xs.cwiseProduct(beta_n).sum() / n - da * H1 * dg - a * H1 : -a * H1;
+    return k32 * n - a * H1 * dg;
+  };
 
-  double lo = 0.0, hi = q_trial / (3.0 * mu);
+  double dq0 = 0.0;
+  const double q0 = q_star(0.0, dq0);  // sqrt(3/2)|s_trial - beta_n|
+  double lo = 0.0, hi = k32 * (s_trial.norm() + beta_n.norm()) / (3.0 * mu);  // residual(hi) <= -sigma_y <= 0
   double T = T_n;
   temperature_at(0.0, T);
-  const double tol = p_.tolerance * q_trial;
-  double x = std::min(hi, (q_trial - y.sigma_y) / (3.0 * mu + std::max(0.0, y.d_eps_p)));
+  const double tol = p_.tolerance * q0;
+  double x = std::min(hi, (q0 - y.sigma_y) / (3.0 * mu + H1 + std::max(0.0, y.d_eps_p)));
   double g = 0.0;
   for (int it = 1; it <= 100; ++it) {
     r.iterations = it;
     const double dTdx = temperature_at(x, T);
-    g = q_trial - 3.0 * mu * x - y.sigma_y;
+    double dq = 0.0;
+    g = q_star(x, dq) - 3.0 * mu * x - y.sigma_y;
     if (std::abs(g) <= tol) break;
     (g > 0.0 ? lo : hi) = x;
-    const double dg = -3.0 * mu - y.d_eps_p - y.d_eps_p_rate / dt - y.d_T * dTdx;
-    double next = x - g / dg;
+    const double dg = dq - 3.0 * mu - y.d_eps_p - y.d_eps_p_rate / dt - y.d_T * dTdx;
+    double next = dg < 0.0 ? x - g / dg : 0.5 * (lo + hi);
     if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);  // bisection safeguard
     if (hi - lo <= 1e-15 * std::max(hi, 1e-300)) break;
     x = next;
@@ -92,8 +120,15 @@ ElasticPlastic::Return ElasticPlastic::plastic_return(double q_trial, double mu,
   r.delta_gamma = x;
   r.temperature = T;
   r.sigma_y = y.sigma_y;
+  r.hardening = y.d_eps_p;
+  r.d_T = y.d_T;
   r.sigma_e = mts_ ? s.sigma_e : st.sigma_e;
   r.residual = g;
+  // Flow direction n = xi*/|xi*| (parallel to xi_{n+1}) and the plastic strain increment.
+  const double a = 1.0 / (1.0 + k32 * H2 * x);
+  const Eigen::Matrix3d xs = s_trial - a * beta_n;
+  const double n = xs.norm();
+  r.plastic_strain = n > 0.0 ? Eigen::Matrix3d((k32 * x / n) * xs) : Eigen::Matrix3d::Zero();
   return r;
 }
 
@@ -141,6 +176,9 @@ bool ElasticPlastic::update_point(const Eigen::Matrix3d& F_old, const Eigen::Mat
   const double q_trial = std::sqrt(1.5 * s_trial.squaredNorm());
   Eigen::Matrix3d s = s_trial;
   double delta = 0.0, sigma_y = 0.0, T_new = T, H = 0.0, work = 0.0, tr_dp = 0.0;
+  Eigen::Matrix3d xi = s_trial;  // the returned stress relative to the backstress (flow direction)
+  std::optional<Tangent4> porous_tangent;  // porous yield with a stability check only
+  Eigen::Matrix3d porous_dp = Eigen::Matrix3d::Zero();
   bool melted = false, plastic = false;
 
   // Mechanical mean stress (VT eq. 18.81 without the thermal term): the EOS at J^e = J/J^p
@@ -182,6 +220,10 @@ bool ElasticPlastic::update_point(const Eigen::Matrix3d& F_old, const Eigen::Mat
         tr_dp = r.plastic_strain.trace();
         work = r.stress.cwiseProduct(r.plastic_strain).sum();  // sigma : Delta eps^p = (1 - phi) sigma_y Delta eps_p
         T_new = T + c * work;
+        if (has_stability_check(failure_)) {  // the J2-I1 continuum tangent (VT §18.6.2) at the returned state
+          porous_dp = r.plastic_strain;
+          porous_tangent = yield_continuum_tangent(*yield_, r.stress, r.sigma_y, r.hardening, st.porosity, kappa, mu);
+        }
         hist[k_evp_] += tr_dp;
         if (eos_->type() == "default_hypo") {
           p_mech = r.I1 / 3.0 + 3.0 * kappa * p_.alpha * (T - T0);  // p_tr - kappa tr(Delta eps^p)
@@ -191,23 +233,30 @@ bool ElasticPlastic::update_point(const Eigen::Matrix3d& F_old, const Eigen::Mat
           p_mech = eos_->evaluate(e2).p;
         }
       }
-    } else if (q_trial > y0.sigma_y && mu > 0.0) {
-      plastic = true;
-      const Return r = plastic_return(q_trial, mu, dt, st, c);
-      delta = r.delta_gamma;
-      sigma_y = r.sigma_y;
-      T_new = r.temperature;
-      if (k_sigma_e_ >= 0) hist[k_sigma_e_] = r.sigma_e;
-      // Hardening modulus of the stability tangent: adiabatic, H = dsigma_y/deps_p + dsigma_y/dT c sigma_y.
-      PlasticState se = st;
-      se.eps_p = st.eps_p + delta;
-      se.eps_p_rate = delta / dt;
-      se.temperature = T_new;
-      se.sigma_e = r.sigma_e;
-      const FlowStress ye = flow_->evaluate(se);
-      H = ye.d_eps_p + ye.d_T * c * ye.sigma_y;
-      s = s_trial * (1.0 - 3.0 * mu * delta / q_trial);  // VT 18.52 with M = sqrt(3/2) xi/|xi|
-      work = sigma_y * delta;
+    } else if (mu > 0.0) {
+      // J2 return on xi = s - beta (VT 18.49-18.52; beta = 0 without kinematic hardening).
+      Eigen::Matrix3d beta_n = Eigen::Matrix3d::Zero();
+      if (kin_) beta_n = Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(hist + k_beta_);
+      if (std::sqrt(1.5 * (s_trial - beta_n).squaredNorm()) > y0.sigma_y) {
+        plastic = true;
+        const Return r = plastic_return(s_trial, beta_n, mu, dt, st, c);
+        delta = r.delta_gamma;
+        sigma_y = r.sigma_y;
+        T_new = r.temperature;
+        if (k_sigma_e_ >= 0) hist[k_sigma_e_] = r.sigma_e;
+        s = s_trial - 2.0 * mu * r.plastic_strain;  // VT 18.46 with M_dev = sqrt(3/2) xi/|xi|
+        Eigen::Matrix3d beta = beta_n;
+        if (kin_) {
+          beta = kin_->backstress_after(beta_n, r.plastic_strain);
+          Eigen::Map<Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(hist + k_beta_) = beta;
+        }
+        xi = s - beta;
+        // Hardening modulus of the stability tangent: adiabatic isotropic part
+        // dsigma_y/deps_p + dsigma_y/dT c sigma_y, plus the kinematic part (KinematicHardeningModel::j2_modulus).
+        H = r.hardening + r.d_T * c * r.sigma_y + (kin_ ? kin_->j2_modulus(beta, xi) : 0.0);
+        // Plastic work sigma : Delta eps^p (VT 12.14); sigma_y Dg without a backstress.
+        work = kin_ ? s.cwiseProduct(r.plastic_strain).sum() : sigma_y * delta;
+      }
     }
   }
   hist[kEpsP] += delta;
@@ -236,7 +285,9 @@ bool ElasticPlastic::update_point(const Eigen::Matrix3d& F_old, const Eigen::Mat
   }
   if (dt > 0.0 && metal_point_failed(failure_, melted, plastic, hist[kPorosity], hist[kDamage], out.r.stress))
     hist[kLocalized] = 1.0;
-  if (plastic && metal_point_unstable(failure_, tau_n, tau, s, delta, dt, kappa, mu, H)) hist[kLocalized] = 1.0;
+  if (plastic && (porous_tangent ? metal_point_unstable(failure_, tau_n, tau, porous_dp, dt, *porous_tangent)
+                                 : metal_point_unstable(failure_, tau_n, tau, xi, delta, dt, kappa, mu, H)))
+    hist[kLocalized] = 1.0;
   return out.r.stress.allFinite() && std::isfinite(out.heating) && std::isfinite(hist[kDamage]);
 }
 
@@ -254,7 +305,6 @@ std::optional<double> ElasticPlastic::density_at_pressure(double p_gauge, double
 }
 
 ConstitutiveModelP ElasticPlastic::create(const ModelParameters& params) {
-  using assembly::block_type;
   using assembly::sub_model;
   const std::string name = "elastic_plastic";
   auto m = std::make_shared<ElasticPlastic>();
@@ -276,9 +326,6 @@ ConstitutiveModelP ElasticPlastic::create(const ModelParameters& params) {
   if (params.get_bool("useModifiedEOS", false))
     params.missing_feature("useModifiedEOS", "elastic_plastic with useModifiedEOS = true");
 
-  const std::string kin = block_type(params, "kinematic_hardening_model");
-  if (!kin.empty() && kin != "none")
-    params.missing_feature("kinematic_hardening_model", name + " kinematic hardening '" + kin + "'");
 
   SubModelContext ctx;
   ctx.bulk_modulus = p.bulk_modulus;
@@ -327,11 +374,23 @@ ConstitutiveModelP ElasticPlastic::create(const ModelParameters& params) {
   if (yield->type() != "von_mises") {
     m->yield_ = yield;
     m->k_evp_ = k++;
-    if (m->failure_.stability && m->failure_.stability->type() != "none")
-      params.missing_feature("stability_check", name + " stability_check with yield_condition '" + yield->type() +
-                                                    "' (the check uses the J2 tangent)");
   }
   if (m->failure_.random_initial_fields()) m->k_drawn_ = k++;
+  // Kinematic hardening (VT ch. 11, eq. 18.47-18.48): the backstress column goes last (flat offset = k).
+  const auto kin = sub_model(params, name, "kinematic_hardening_model", kinematic_hardening_models(), "none", ctx,
+                             [](const std::string& kk, const ModelParameters& q, const SubModelContext& cc) {
+                               return create_kinematic_hardening_model(kk, q, cc);
+                             });
+  if (kin->type() != "none") {
+    if (m->yield_)
+      params.missing_feature("kinematic_hardening_model",
+                             name + " kinematic hardening with yield_condition '" + yield->type() + "' (von Mises only)");
+    m->kin_ = kin;
+    m->k_beta_ = k++;
+  }
+  if (m->yield_ && m->mts_)
+    params.missing_feature("flow_model", name + " MTS flow (sigma_e history) with yield_condition '" + yield->type() +
+                                             "' (the two-invariant return does not integrate sigma_e)");
   m->history_count_ = k;
   return m;
 }

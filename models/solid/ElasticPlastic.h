@@ -9,7 +9,7 @@
 //   moduli at the start of the step (§18.2, last paragraph; §18.7.1 "mu_{n+1} = mu_n"):
 //     p̄_n = -tr(tau_n)/3, T_m = melt(p̄_n, rho), mu = shear(p̄_n, rho, T_n, T_m)
 //   trial deviator (18.45): s_trial = s_n + 2 mu dev(de);  q_trial = sqrt(3/2) |s_trial|
-//   yield (18.82): f = sqrt(3/2)|xi| - sigma_y(eps_p, eps_p_dot, T), xi = s (no kinematic hardening)
+//   yield (18.82): f = sqrt(3/2)|xi| - sigma_y(eps_p, eps_p_dot, T), xi = s - beta (beta: kinematic hardening, below)
 //   flow (18.84-18.86): r = sqrt(3/2) xi/|xi|, d^p = gamma_dot r, eps_p_dot = gamma_dot (h^alpha = 1)
 //   heating (18.20, 18.55): T = T_n + Delta_gamma h^T, h^T = chi sigma_y/(rho C_p)
 //   Backward Euler (18.52-18.56) collapses for J2 to the scalar pair
@@ -29,7 +29,7 @@
 // stored energy J [sigma_m^2/(2K) + s:s/(4 mu)].
 //
 // Errata of ch. 18 and choices (docs/models/plasticity.md):
-//   - (18.78) prints beta^{(k+1)} = beta_n + h^beta without Dg: moot here (no kinematic hardening).
+//   - (18.78) prints beta^{(k+1)} = beta_n + h^beta without Dg: read as beta_n + Dg h^beta (18.48).
 //   - eps_p scaling: the convention of §18.8.1 (r = sqrt(3/2) n, eps_p_dot = gamma_dot).
 //   - (18.76) evaluates the yield check at eps_dot_n; here the rate is Dg/dt throughout (the
 //     check at Dg = 0 uses rate 0), so the check and the converged state satisfy the same
@@ -44,13 +44,25 @@
 // /(rho C_p) after it); porosity grows by (1 - phi) tr Delta eps^p; ln J^p is history and the
 // EOS is evaluated at J^e = J/J^p (exact on the returned surface for default_hypo; other EOS
 // are re-evaluated at the new J^e, so f = O(Delta eps_v^2) off it). Stability checks with a
-// porous yield: MissingFeature.
-// MissingFeature: kinematic hardening, useModifiedEOS.
+// porous yield use the J2-I1 continuum tangent (models/plasticity/ContinuumTangent.h, VT §18.6.2).
+// Kinematic hardening (<kinematic_hardening_model> prager / armstrong_frederick, VT ch. 11 and
+// eq. 18.47-18.52) with the von Mises yield: f = sqrt(3/2)|xi| - sigma_y, xi = s - beta, flow
+// Delta eps^p = sqrt(3/2) Dg n, n = xi_{n+1}/|xi_{n+1}|, and the backward Euler of eq. 11.3 (18.48
+// with h^beta Dg; the erratum of 18.78 resolved with the Dg factor):
+//   beta_{n+1} = a (beta_n + (2/3) H_1 Delta eps^p),  a = 1/(1 + H_2 ||Delta eps^p||)  (H_2 = 0: Prager).
+// Then xi_{n+1} is parallel to xi* = s_trial - a beta_n and r_f becomes
+//   r_f = sqrt(3/2)|xi*(Dg)| - (3 mu + a H_1) Dg - sigma_y(eps_p,n + Dg, Dg/dt, T) = 0,
+// solved with the same condensed Newton (T from r_T) and bracket [0, sqrt(3/2)(|s_trial| + |beta_n|)/(3 mu)];
+// the backstress history column is "backStress" (unrotated frame). Heating uses sigma_y (18.20),
+// the plastic work sigma : Delta eps^p; the stability tangent adds the kinematic modulus
+// H_1 - 3/2 H_2 beta : n (KinematicHardeningModel::j2_modulus).
+// MissingFeature: kinematic hardening or MTS with a porous yield, useModifiedEOS.
 #include <memory>
 
 #include "models/plasticity/FlowStressModel.h"
 #include "models/plasticity/PlasticityEos.h"
 #include "models/plasticity/ThermalModels.h"
+#include "models/plasticity/YieldCondition.h"
 #include "models/solid/ConstitutiveModel.h"
 #include "models/solid/MetalFailure.h"
 
@@ -88,10 +100,17 @@ class ElasticPlastic final : public ConstitutiveModel {
     double temperature = 0.0;  // T_{n+1}
     double sigma_y = 0.0;      // sigma_y(eps_p,n+1, Dg/dt, T_{n+1})
     double sigma_e = 0.0;      // MTS structure stress at n+1 (sigma_e,n otherwise)
+    double hardening = 0.0;    // d sigma_y/d eps_p at the returned state
+    double d_T = 0.0;          // d sigma_y/dT at the returned state
     double residual = 0.0;     // r_f at the returned Dg
+    Eigen::Matrix3d plastic_strain = Eigen::Matrix3d::Zero();  // Delta eps^p = sqrt(3/2) Dg n, n = xi/|xi|
     int iterations = 0;
   };
   // st: the state at t_n (eps_p, T, rho, p̄, mu, T_m, sigma_e); c = chi/(rho C_p) (0: isothermal).
+  // s_trial: the deviatoric trial stress (18.45); beta_n: the backstress at t_n (0 without kinematic hardening).
+  Return plastic_return(const Eigen::Matrix3d& s_trial, const Eigen::Matrix3d& beta_n, double mu, double dt,
+                        const PlasticState& st, double c) const;
+  // The isotropic case (beta = 0) for a trial of von Mises stress q_trial.
   Return plastic_return(double q_trial, double mu, double dt, const PlasticState& st, double c) const;
 
   using PointOut = MetalPointOut;
@@ -110,6 +129,8 @@ class ElasticPlastic final : public ConstitutiveModel {
   int k_sigma_e_ = -1;        // history index of sigma_e (MTS only)
   int k_T0_ = -1, k_Tprev_ = -1;  // thermal reference and last temperature (alpha != 0 only)
   int k_drawn_ = -1;          // "initialFieldsDrawn" (Gaussian initial porosity/damage only)
+  int k_beta_ = -1;           // flat offset of "backStress" (9 values, last column; kinematic hardening only)
+  std::shared_ptr<const KinematicHardeningModel> kin_;  // nullptr: no backstress
   int k_evp_ = -1;            // "plasticVolumetricStrain" ln J^p (porous yield only)
   std::shared_ptr<const YieldCondition> yield_;  // nullptr: von Mises (J2 return)
   int history_count_ = 6;

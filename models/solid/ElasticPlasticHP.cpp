@@ -4,10 +4,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include <Eigen/LU>
 
 #include "models/ModelParameters.h"
+#include "models/plasticity/ContinuumTangent.h"
 #include "models/plasticity/PorousReturn.h"
 #include "models/solid/Kinematics.h"
 #include "models/solid/MetalPointLoop.h"
@@ -17,7 +19,7 @@ namespace tephra {
 
 namespace {
 enum HistoryIndex { kEpsP = 0, kEpsPRate = 1, kPorosity = 2, kDamage = 3, kLocalized = 4, kHistoryCount = 5 };
-constexpr int kMaxHistory = kHistoryCount + 2 + 9;  // + plasticVolumetricStrain, initialFieldsDrawn, backStress
+constexpr int kMaxHistory = kHistoryCount + 3 + 9;  // + plasticVolumetricStrain, initialFieldsDrawn, mtsStructureStress, backStress
 }  // namespace
 
 std::vector<HistoryVariable> ElasticPlasticHP::history() const {
@@ -32,6 +34,7 @@ std::vector<HistoryVariable> ElasticPlasticHP::history() const {
     h.push_back({"plasticVolumetricStrain", 1, {0.0}, "ln J^p = sum of tr(Delta eps^p) (porous yield only) [-]"});
   if (k_drawn_ >= 0)
     h.push_back({"initialFieldsDrawn", 1, {0.0}, "1 once the Gaussian initial porosity/damage is drawn"});
+  if (k_sigma_e_ >= 0) h.push_back({"mtsStructureStress", 1, {0.0}, "MTS evolving structure stress sigma_e [Pa]"});
   if (k_beta_ >= 0)
     h.push_back({"backStress", 9, std::vector<double>(9, 0.0),
                  "backstress β (VT ch. 11), in the unrotated frame of the point [Pa]"});
@@ -68,6 +71,8 @@ bool ElasticPlasticHP::update_point(const Eigen::Matrix3d& F_old, const Eigen::M
   st.density = density0 / J;
   st.pressure = -eos.p;
   st.porosity = hist[kPorosity];
+  st.sigma_e = k_sigma_e_ >= 0 ? hist[k_sigma_e_] : 0.0;
+  const double sigma_e_n = st.sigma_e;
   st.melt_temperature = melt_->melt_temperature(st);
   const double mu = shear_->shear_modulus(st);
   st.shear_modulus = mu;
@@ -77,6 +82,9 @@ bool ElasticPlasticHP::update_point(const Eigen::Matrix3d& F_old, const Eigen::M
   const double q_trial = std::sqrt(1.5 * s_trial.squaredNorm());
   Eigen::Matrix3d s = s_trial;
   double delta = 0.0, H = 0.0, mean = eos.p, work = 0.0, tr_dp = 0.0;
+  Eigen::Matrix3d xi = s_trial;  // returned stress relative to the backstress (flow direction of the tangent)
+  std::optional<Tangent4> porous_tangent;  // porous yield with a stability check only
+  Eigen::Matrix3d porous_dp = Eigen::Matrix3d::Zero();
   const bool melted = p_.do_melting && T >= st.melt_temperature;
   if (melted) {
     s.setZero();
@@ -101,6 +109,10 @@ bool ElasticPlasticHP::update_point(const Eigen::Matrix3d& F_old, const Eigen::M
       s = r.stress - (r.I1 / 3.0) * I;
       tr_dp = r.plastic_strain.trace();
       work = r.stress.cwiseProduct(r.plastic_strain).sum();  // σ : Δε^p = (1 - φ) σ_y Δε_p
+      if (has_stability_check(failure_)) {  // the J2-I1 continuum tangent (VT §18.6.2) at the returned state
+        porous_dp = r.plastic_strain;
+        porous_tangent = yield_continuum_tangent(*yield_, r.stress, r.sigma_y, r.hardening, st.porosity, pr.K, mu);
+      }
       hist[k_evp_] += tr_dp;
       // Mean stress: exact for the rate form (p_tr - K tr Δε^p); others at the new J^e.
       ei.J = J * std::exp(-hist[k_evp_]);
@@ -122,6 +134,10 @@ bool ElasticPlasticHP::update_point(const Eigen::Matrix3d& F_old, const Eigen::M
       for (int it = 0; it < 100; ++it) {
         st.eps_p = hist[kEpsP] + x;
         st.eps_p_rate = x / dt;
+        if (k_sigma_e_ >= 0) {  // MTS: sigma_e = sigma_e,n + theta(sigma_e,n) Delta (theta seeds d sigma_y/d eps_p)
+          st.sigma_e = sigma_e_n;
+          st.sigma_e = sigma_e_n + flow_->internal_stress_rate(st) * x;
+        }
         const FlowStress y = flow_->evaluate(st);
         const double a = 1.0 / (1.0 + c * H2 * x), da = -c * H2 * a * a;
         const Eigen::Matrix3d xi_star = s_trial - a * beta_n;
@@ -144,9 +160,13 @@ bool ElasticPlasticHP::update_point(const Eigen::Matrix3d& F_old, const Eigen::M
       const Eigen::Matrix3d dep = xi_norm > 0.0 ? Eigen::Matrix3d((c * delta / xi_norm) * xi_star) : Eigen::Matrix3d::Zero();
       s = s_trial - 2.0 * mu * dep;
       work = s.cwiseProduct(dep).sum();  // σ:Δε^p (tr Δε^p = 0); σ_y Δ when β = 0
+      if (k_sigma_e_ >= 0) hist[k_sigma_e_] = st.sigma_e;
+      xi = s;
       if (kin_) {
         const Eigen::Matrix3d beta = kin_->backstress_after(beta_n, dep);
         Eigen::Map<Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(hist + k_beta_) = beta;
+        xi = s - beta;
+        H += kin_->j2_modulus(beta, xi);  // kinematic part of the stability tangent's modulus
       }
     }
   }
@@ -177,7 +197,9 @@ bool ElasticPlasticHP::update_point(const Eigen::Matrix3d& F_old, const Eigen::M
   }
   if (dt > 0.0 && metal_point_failed(failure_, melted, delta > 0.0, hist[kPorosity], hist[kDamage], out.r.stress))
     hist[kLocalized] = 1.0;
-  if (delta > 0.0 && metal_point_unstable(failure_, tau_n, tau, s, delta, dt, kappa, mu, H)) hist[kLocalized] = 1.0;
+  if (delta > 0.0 && (porous_tangent ? metal_point_unstable(failure_, tau_n, tau, porous_dp, dt, *porous_tangent)
+                                     : metal_point_unstable(failure_, tau_n, tau, xi, delta, dt, kappa, mu, H)))
+    hist[kLocalized] = 1.0;
   return out.r.stress.allFinite() && std::isfinite(out.heating) && std::isfinite(hist[kDamage]);
 }
 
@@ -210,6 +232,15 @@ ConstitutiveModelP ElasticPlasticHP::create(const ModelParameters& params) {
   params.get_double("initial_material_temperature", 0.0);  // Vaango: reference of the thermal strain (alpha = 0 here)
   if (params.get_double("coeff_thermal_expansion", 0.0) != 0.0)
     params.missing_feature("coeff_thermal_expansion", "elastic_plastic_hp thermal expansion strain (alpha != 0)");
+  if (params.get_bool("useModifiedEOS", false))
+    params.missing_feature("useModifiedEOS", "elastic_plastic_hp with useModifiedEOS = true");
+  // <plastic_convergence_algo> (Vaango: radialReturn by default, biswajit required for gurson): both
+  // select Tephra's returns, which solve the backward-Euler equations of the step to the tolerance
+  // (von Mises: the implicit radial return; porous yields: the two-invariant return), not Vaango's
+  // substepped semi-implicit iteration of Algorithm 1 (docs/models/plasticity.md).
+  const std::string algo = params.get_string("plastic_convergence_algo", "radialReturn");
+  if (algo != "radialReturn" && algo != "biswajit")
+    params.fail("plastic_convergence_algo", "must be radialReturn or biswajit (here '" + algo + "')");
   const std::string dev = assembly::block_type(params, "deviatoric_stress_model");
   if (!dev.empty() && dev != "hypoElastic")
     params.missing_feature("deviatoric_stress_model", "elastic_plastic_hp deviatoric_stress_model '" + dev + "'");
@@ -251,9 +282,6 @@ ConstitutiveModelP ElasticPlasticHP::create(const ModelParameters& params) {
   if (yield->type() != "von_mises") {
     m->yield_ = yield;
     m->k_evp_ = k++;
-    if (m->failure_.stability && m->failure_.stability->type() != "none")
-      params.missing_feature("stability_check", "elastic_plastic_hp stability_check with yield_condition '" +
-                                                    yield->type() + "' (the check uses the J2 tangent)");
   }
   if (m->failure_.random_initial_fields()) m->k_drawn_ = k++;
   // Kinematic hardening (VT ch. 11): the backstress column goes last (flat offset = k).
@@ -262,19 +290,21 @@ ConstitutiveModelP ElasticPlasticHP::create(const ModelParameters& params) {
                                        [](const std::string& key, const ModelParameters& q, const SubModelContext& c) {
                                          return create_kinematic_hardening_model(key, q, c);
                                        });
+  // MTS: the structure stress sigma_e is a scalar history column (before the backstress).
+  if (m->flow_->type() == "mechanical_threshold_stress") {
+    if (m->yield_)
+      params.missing_feature("flow_model", "elastic_plastic_hp MTS flow (sigma_e history) with yield_condition '" +
+                                               yield->type() + "' (the two-invariant return does not integrate sigma_e)");
+    m->k_sigma_e_ = k++;
+  }
   if (kin->type() != "none") {
     if (m->yield_)
       params.missing_feature("kinematic_hardening_model", "elastic_plastic_hp kinematic hardening with yield_condition '" +
                                                               yield->type() + "' (von Mises only)");
-    if (m->failure_.stability && m->failure_.stability->type() != "none")
-      params.missing_feature("stability_check", "elastic_plastic_hp stability_check with kinematic hardening (the "
-                                                "check uses the isotropic J2 tangent)");
     m->kin_ = kin;
     m->k_beta_ = k++;
   }
   m->history_count_ = k;
-  if (m->flow_->type() == "mechanical_threshold_stress")
-    params.missing_feature("flow_model", "elastic_plastic_hp with the MTS evolving structure stress sigma_e");
   return m;
 }
 

@@ -31,7 +31,8 @@
 // Yield conditions gurson / rousselier: the two-invariant backward-Euler return of
 // models/plasticity/PorousReturn.h (isothermal in the return, heating χ σ:Δε^p/(ρ C_p Δt)
 // after it; porosity grows by (1 - φ) tr Δε^p); the plastic volume ln J^p is history and the
-// EOS is evaluated at J^e = J/J^p. Stability checks with a porous yield: MissingFeature.
+// EOS is evaluated at J^e = J/J^p. Stability checks with a porous yield use the J2-I1
+// continuum tangent of the returned state (models/plasticity/ContinuumTangent.h, VT §18.6.2).
 // Kinematic hardening (<kinematic_hardening_model> prager / armstrong_frederick, VT ch. 11)
 // with the von Mises yield: f = sqrt(3/2)|ξ| - σ_y, ξ = s - β (VT ch. 8). The backstress β
 // (history "backStress", unrotated frame, deviatoric) follows the backward Euler of eq. 11.3
@@ -43,7 +44,12 @@
 // [0, sqrt(3/2)(|s_trial| + |β_n|)/(3μ)]; s_{n+1} = s_trial - 2μ Δε^p. Without kinematic
 // hardening β = 0 and this is the radial return above. Heating and plastic work use
 // σ:Δε^p (VT eq. 12.14), which is σ_y Δ without a backstress.
-// MissingFeature: kinematic hardening with a porous yield or a stability check,
+// MTS flow: the structure stress σ_e is history ("mtsStructureStress"), σ_e = σ_e,n + θ(σ_e,n) Δ
+// inside the return (the flow model's ∂σ_y/∂ε_p carries S_e θ μ/μ_0), as in elastic_plastic.
+// Stability checks with kinematic hardening use the J2 tangent on n̂ = ξ/|ξ| with the modulus
+// H = ∂σ_y/∂ε_p + H_1 - 3/2 H_2 β:n̂ (KinematicHardeningModel::j2_modulus).
+// <plastic_convergence_algo> radialReturn / biswajit: both take the returns above.
+// MissingFeature: kinematic hardening or MTS with a porous yield, useModifiedEOS,
 // coeff_thermal_expansion != 0, deviatoric_stress_model other than hypoElastic.
 #include <memory>
 
@@ -80,7 +86,7 @@ class ElasticPlasticHP final : public ConstitutiveModel {
   std::optional<double> density_at_pressure(double p_gauge, double density0, double T) const override;
 
   // The point update (what update() does for one point; unit tests call it).
-  // hist = {ε_p, ε̇_p, φ, D, localized, [ln J^p], [drawn], [β (9, row-major)]} (flat),
+  // hist = {ε_p, ε̇_p, φ, D, localized, [ln J^p], [drawn], [σ_e], [β (9, row-major)]} (flat),
   // read at t_n and overwritten with t_{n+1}.
   using PointOut = MetalPointOut;
   bool update_point(const Eigen::Matrix3d& F_old, const Eigen::Matrix3d& F_new, const Eigen::Matrix3d& stress_old,
@@ -95,6 +101,7 @@ class ElasticPlasticHP final : public ConstitutiveModel {
   std::shared_ptr<const SpecificHeatModel> cp_;
   std::shared_ptr<const YieldCondition> yield_;  // nullptr: von Mises (radial return)
   std::shared_ptr<const KinematicHardeningModel> kin_;  // nullptr: no backstress
+  int k_sigma_e_ = -1;  // history "mtsStructureStress" (MTS flow only)
   int k_beta_ = -1;   // flat offset of history "backStress" (9 values, last column; kinematic only)
   int k_evp_ = -1;    // history "plasticVolumetricStrain" (porous yield only)
   int k_drawn_ = -1;  // history "initialFieldsDrawn" (Gaussian initial fields only)

@@ -105,11 +105,19 @@ bool metal_point_unstable(const MetalFailureParams& f, const Eigen::Matrix3d& ta
   const double ns = s.norm();
   if (!(ns > 0.0)) return false;
   const Eigen::Matrix3d n_hat = s / ns;
+  // d^p = gamma_dot r, r = sqrt(3/2) n_hat
+  return metal_point_unstable(f, tau_n, tau, delta_gamma * std::sqrt(1.5) * n_hat, dt,
+                              j2_elastoplastic_tangent(K, mu, H, n_hat));
+}
+
+bool metal_point_unstable(const MetalFailureParams& f, const Eigen::Matrix3d& tau_n, const Eigen::Matrix3d& tau,
+                          const Eigen::Matrix3d& delta_eps_p, double dt, const Tangent4& C) {
+  if (!has_stability_check(f) || !(dt > 0.0)) return false;
   StabilityInput in;
   in.stress = tau;
   in.stress_rate = (tau - tau_n) / dt;
-  in.plastic_strain_rate = delta_gamma * std::sqrt(1.5) * n_hat / dt;  // d^p = gamma_dot r, r = sqrt(3/2) n_hat
-  in.tangent = j2_elastoplastic_tangent(K, mu, H, n_hat);
+  in.plastic_strain_rate = delta_eps_p / dt;
+  in.tangent = C;
   return f.stability->unstable(in);
 }
 

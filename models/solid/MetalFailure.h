@@ -89,11 +89,18 @@ void evolve_porosity_and_damage(const MetalFailureParams& f, const Eigen::Matrix
                                 double dt, double& porosity, double& damage, double trace_dp = 0.0);
 
 // The stability check of a plastic J2 step (VT ch. 16), in the unrotated frame:
-// tau_n, tau the stresses at t_n and t_{n+1}; s the deviator at t_{n+1}; Dg the
-// increment of eps_p (d^p = Dg sqrt(3/2) s/|s| / dt); K, mu the moduli; H the
-// hardening modulus of the continuum tangent (models/plasticity/StabilityCheck.h).
+// tau_n, tau the stresses at t_n and t_{n+1}; s the flow direction at t_{n+1}: the deviator
+// relative to the backstress xi = s - beta (the deviator without kinematic hardening); Dg the
+// increment of eps_p (d^p = Dg sqrt(3/2) xi/|xi| / dt); K, mu the moduli; H the total (isotropic
+// + kinematic) hardening modulus of the continuum tangent (models/plasticity/StabilityCheck.h).
 bool metal_point_unstable(const MetalFailureParams& f, const Eigen::Matrix3d& tau_n, const Eigen::Matrix3d& tau,
                           const Eigen::Matrix3d& s, double delta_gamma, double dt, double K, double mu, double H);
+// The same with a given continuum tangent C (a porous yield: the J2-I1 tangent of
+// models/plasticity/ContinuumTangent.h) and the step's plastic strain increment (d^p = Δε^p/dt).
+bool metal_point_unstable(const MetalFailureParams& f, const Eigen::Matrix3d& tau_n, const Eigen::Matrix3d& tau,
+                          const Eigen::Matrix3d& delta_eps_p, double dt, const Tangent4& C);
+// Whether a stability check is configured (the porous branches build their tangent only then).
+inline bool has_stability_check(const MetalFailureParams& f) { return f.stability && f.stability->type() != "none"; }
 
 // The failure tests above (without the stability check).
 bool metal_point_failed(const MetalFailureParams& f, bool melted, bool plastic, double porosity, double damage,

@@ -333,13 +333,21 @@ bool is_missing_feature(const MapModelParameters& p) {
 }
 
 TEST(ElasticPlastic, UnimplementedOptionsAreMissingFeaturesAndBadInputFails) {
-  auto g = linear_parameters(0);  // a porous yield with a (J2-tangent) stability check
+  auto g = linear_parameters(0);  // a porous yield with a stability check: the J2-I1 tangent
   g.add_block("yield_condition", "gurson", {{"q1", 1.5}, {"q2", 1.0}, {"q3", 2.25}, {"k", 4.0}, {"f_c", 0.05}});
   g.add_block("stability_check", "drucker");
+  EXPECT_FALSE(is_missing_feature(g));
+  g.add_block("flow_model", "mts_model",  // MTS with a porous yield (sigma_e not integrated there)
+              {{"sigma_a", 40e6}, {"mu_0", 47.7e9}, {"D", 3.0e9}, {"T_0", 180}, {"koverbcubed", 0.823e6},
+               {"g_0i", 0}, {"g_0e", 1.6}, {"edot_0i", 0}, {"edot_0e", 1e7}, {"p_i", 0}, {"q_i", 0},
+               {"p_e", 0.667}, {"q_e", 1}, {"sigma_i", 0}, {"a_0", 2390e6}, {"a_1", 12e6}, {"a_2", 1.696e6},
+               {"a_3", 0}, {"theta_IV", 0}, {"alpha", 2}, {"edot_es0", 1e7}, {"g_0es", 0.2625}, {"sigma_es0", 770e6}});
   EXPECT_TRUE(is_missing_feature(g));
-  auto k = linear_parameters(0);
-  k.add_block("kinematic_hardening_model", "prager");
-  EXPECT_TRUE(is_missing_feature(k));
+  auto k = linear_parameters(0);  // kinematic hardening works with von Mises (test_model_elastic_plastic_kinematic) ...
+  k.add_block("kinematic_hardening_model", "prager", {{"hardening_modulus", 1e9}});
+  EXPECT_FALSE(is_missing_feature(k));
+  k.add_block("yield_condition", "gurson", {{"q1", 1.5}, {"q2", 1.0}, {"q3", 2.25}, {"k", 4.0}, {"f_c", 0.05}});
+  EXPECT_TRUE(is_missing_feature(k));  // ... not with a porous yield (the two-invariant return has no backstress)
   auto st = linear_parameters(0);
   st.add_block("stability_check", "no_such_check");
   EXPECT_THROW(create_constitutive_model("elastic_plastic", st), std::invalid_argument);

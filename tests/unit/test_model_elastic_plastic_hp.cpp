@@ -175,10 +175,12 @@ TEST(ElasticPlasticHP, UnimplementedOptionsAreMissingFeatures) {
     p.enclosing = {{"melt_temp", 1356.0}, {"specific_heat", 414.0}};
     return p;
   };
-  auto g = base();  // a porous yield with a (J2-tangent) stability check
+  auto g = base();  // a porous yield with a stability check: the J2-I1 tangent (test_plasticity_stability)
   g.add_block("yield_condition", "gurson", {{"q1", 1.5}, {"q2", 1.0}, {"q3", 2.25}, {"k", 4.0}, {"f_c", 0.05}});
   g.add_block("stability_check", "acoustic");
-  EXPECT_TRUE(is_missing_feature(g));
+  EXPECT_FALSE(is_missing_feature(g));
+  g.add_block("kinematic_hardening_model", "prager", {{"hardening_modulus", 1e9}});
+  EXPECT_TRUE(is_missing_feature(g));  // the two-invariant return has no backstress
   // Porosity, damage and failure flags are implemented (models/solid/MetalFailure.h).
   for (const char* flag : {"evolve_porosity", "evolve_damage", "check_TEPLA_failure_criterion"}) {
     auto p = base();
@@ -196,6 +198,17 @@ TEST(ElasticPlasticHP, UnimplementedOptionsAreMissingFeatures) {
   auto bad = base();
   bad.add_block("flow_model", "no_such_law");
   EXPECT_THROW(create_constitutive_model("elastic_plastic_hp", bad), std::invalid_argument);
+  auto me = base();
+  me.values["useModifiedEOS"] = 1.0;
+  EXPECT_TRUE(is_missing_feature(me));
+  for (const char* algo : {"radialReturn", "biswajit"}) {  // both take Tephra's returns
+    auto a = base();
+    a.strings["plastic_convergence_algo"] = algo;
+    EXPECT_TRUE(create_constitutive_model("elastic_plastic_hp", a)) << algo;
+  }
+  auto ba = base();
+  ba.strings["plastic_convergence_algo"] = "newton";
+  EXPECT_THROW(create_constitutive_model("elastic_plastic_hp", ba), std::invalid_argument);
 }
 
 }  // namespace

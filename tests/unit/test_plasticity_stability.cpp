@@ -124,5 +124,42 @@ TEST(StabilityCheck, SofteningFlagsThePointHardeningDoesNot) {
       }
 }
 
+// Porous yields (Gurson, Rousselier) take the J2-I1 continuum tangent (VT §18.6.2,
+// ContinuumTangent.h; its finite-difference check: test_plasticity_tangent): the acoustic
+// check flags a softening matrix (dsigma_y/deps_p = -0.1 mu) after yield and never a
+// hardening one, in both models. Same plane-strain shear path as above.
+TEST(StabilityCheck, PorousYieldSofteningFlagsThePointHardeningDoesNot) {
+  for (const char* type : {"elastic_plastic", "elastic_plastic_hp"})
+    for (const char* yield : {"gurson", "rousselier"})
+      for (const double H : {-0.1 * kMu, 0.1 * kMu}) {
+        auto p = metal(type, H, "acoustic");
+        if (std::string(yield) == "gurson")
+          p.add_block("yield_condition", "gurson", {{"q1", 1.5}, {"q2", 1.0}, {"q3", 2.25}, {"k", 4.0}, {"f_c", 0.05}});
+        else
+          p.add_block("yield_condition", "rousselier", {{"D", 2.0}, {"sigma_1", 300e6}});
+        p.values["initial_mean_porosity"] = 0.01;
+        p.values["evolve_porosity"] = 0.0;
+        const auto m = create_constitutive_model(type, p);
+        ASSERT_TRUE(m) << type;
+        int localized = -1;
+        for (std::size_t k = 0; k < m->history().size(); ++k)
+          if (m->history()[k].name == "localized") localized = static_cast<int>(k);
+        ASSERT_GE(localized, 0);
+        test::PointState s(*m);
+        int first_flag = -1, first_plastic = -1;
+        for (int k = 1; k <= 40; ++k) {
+          Eigen::Matrix3d F = Eigen::Matrix3d::Identity();
+          F(0, 0) = std::exp(1e-4 * k);
+          F(2, 2) = std::exp(-1e-4 * k);
+          ASSERT_EQ(test::step_point(*m, 7830.0, s, F, 1e-6), -1);
+          if (first_plastic < 0 && s.history[0][0] > 0.0) first_plastic = k;
+          if (first_flag < 0 && s.history[localized][0] == 1.0) first_flag = k;
+        }
+        ASSERT_GT(first_plastic, 0) << type << " " << yield;
+        EXPECT_EQ(first_flag >= 0, H < 0) << type << " " << yield << " H " << H;
+        if (H < 0) EXPECT_GE(first_flag, first_plastic) << "flagged before yield";
+      }
+}
+
 }  // namespace
 }  // namespace tephra

@@ -16,6 +16,8 @@
 // artificial_viscosity, so its heating is on, as in Vaango), which the return
 // does not see: T_p - heating dt <= T_return <= T_p after the step. The plastic strain rate tends to
 // the imposed 4000 /s and eps_p to ln F_zz - q/E (uniaxial stress, isochoric flow).
+// Its Vaango sisters (adiCu{MTS,PTW,SCG,ZA}4000s696K.ups: A4 with the flow, shear and
+// melting blocks swapped) are checked the same way against their laws (below).
 //
 // A5, MPM/Impact/cylinderImpact_A_JC.ups: the Taylor impact (elastic_plastic_hp,
 // JC flow, JC damage, 26.7k particles), the first 1.5 us of the deck's 80 us, unchanged
@@ -193,6 +195,220 @@ TEST(MetalDecks, A4MtsSisterDeckFollowsTheMtsLaw) {
   EXPECT_LT(worst, 1e-10);  // the return tolerance is 1e-12 (deck); observed 4.5e-13
   EXPECT_GT(last_ep, 0.45);
   EXPECT_GT(prev_se, 1e8);
+}
+
+// The PTW, SCG and ZA sister decks (Vaango's adiCu{PTW,SCG,ZA}4000s696K.ups): A4 with the
+// flow, shear and melting blocks swapped, constants as in those decks (the manual's ch. 10
+// copper values). The returned q is checked against the flow law written out here (VT eq.
+// 10.4-10.10, 10.24-10.28) at the particle's state, with the temperature bracket of A4:
+// the law is decreasing in T (and increasing in mu, itself decreasing in T), so
+//   law(T_p) <= q <= law(T_p - heating dt)
+// holds for the return's T_{n+1} in that interval (A4's comment: heating dt also holds the
+// artificial-viscosity heating). The moduli state of elastic_plastic is the start of the step
+// (VT §18.2): p̄_n = -tr(sigma_n)/3 of the previous step, rho = rho_0/J.
+const char* const kPtwBlocks = R"(<flow_model type="preston_tonks_wallace">
+            <theta> 0.025 </theta> <p> 2.0 </p> <s0> 0.0085 </s0> <sinf> 0.00055 </sinf>
+            <kappa> 0.11 </kappa> <gamma> 0.00001 </gamma> <y0> 0.0001 </y0> <yinf> 0.0001 </yinf>
+            <y1> 0.094 </y1> <y2> 0.575 </y2> <beta> 0.25 </beta> <M> 63.54 </M>
+            <G0> 518e8 </G0> <alpha> 0.20 </alpha> <alphap> 0.20 </alphap>
+          </flow_model>
+          <shear_modulus_model type="np_shear">
+            <mu_0> 50.7e9 </mu_0> <slope_mu_p_over_mu0> 28.0e-12 </slope_mu_p_over_mu0>
+            <zeta>0.04</zeta> <C> 0.057 </C> <m> 63.55 </m>
+          </shear_modulus_model>
+          <melting_temp_model type="scg_Tm">
+            <T_m0> 1360.0 </T_m0> <Gamma_0> 1.99 </Gamma_0> <a> 1.5 </a>
+          </melting_temp_model>)";
+const char* const kScgBlocks = R"(<flow_model type="steinberg_cochran_guinan">
+            <mu_0> 47.7e9 </mu_0> <sigma_0> 0.125e9 </sigma_0> <Y_max> 0.64e9 </Y_max> <beta> 36 </beta>
+            <n> 0.45 </n> <A> 28.0e-12 </A> <B> 0.92e-3 </B> <T_m0> 1790.0 </T_m0> <Gamma_0> 1.99 </Gamma_0>
+            <a> 1.5 </a> <epsilon_p0> 0.0 </epsilon_p0> <C1> 0.71e6 </C1> <C2> 0.012e6 </C2>
+            <energy_to_form_kink_pair> 0.31 </energy_to_form_kink_pair>
+            <Boltzmann_constant> 8.617385e-5 </Boltzmann_constant> <Peierls_stress> 0.5e8 </Peierls_stress>
+          </flow_model>
+          <shear_modulus_model type="scg_shear">
+            <mu_0> 47.7e9 </mu_0> <A> 28.0e-12 </A> <B> 0.92e-3 </B>
+          </shear_modulus_model>
+          <melting_temp_model type="scg_Tm">
+            <T_m0> 1360.0 </T_m0> <Gamma_0> 1.99 </Gamma_0> <a> 1.5 </a>
+          </melting_temp_model>)";
+const char* const kZaBlocks = R"(<flow_model type="zerilli_armstrong">
+            <sigma_g> 46.5e6 </sigma_g> <k_H> 5.0e6 </k_H> <sqrt_l_inv> 3.7 </sqrt_l_inv>
+            <B> 0.0 </B> <beta_0> 0.0 </beta_0> <beta_1> 0.0 </beta_1> <B_0> 890.0e6 </B_0>
+            <alpha_0> 0.0028 </alpha_0> <alpha_1> 0.000115 </alpha_1> <K> 0.0 </K> <n> 0.0 </n>
+          </flow_model>
+          <shear_modulus_model type="constant_shear">
+          </shear_modulus_model>
+          <melting_temp_model type="constant_Tm">
+          </melting_temp_model>)";
+
+// A4's text with its flow, shear and melting blocks replaced by `blocks`.
+std::string sister_deck_text(const std::string& blocks) {
+  std::ifstream in(deck_path("adiCuJC4000s696K.ups"));
+  std::string xml((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::size_t a = xml.find("<flow_model type=\"johnson_cook\">");
+  const std::size_t b = xml.find("</melting_temp_model>") + std::string("</melting_temp_model>").size();
+  if (a == std::string::npos || b < a) return "";
+  return xml.replace(a, b - a, blocks);
+}
+
+struct SisterState {
+  double ep, rate, T, p_bar, rho;  // p̄ positive in compression
+};
+// Runs a sister deck over A4's loading (1.2e-4 s) and checks q against law(state) with the
+// temperature bracket above. Returns the worst relative excursion outside the bracket.
+template <class Law>
+double check_sister_deck(const std::string& name, const std::string& blocks, Law&& law, double* last_ep,
+                         double* last_rate, int* checks) {
+  const std::string xml = sister_deck_text(blocks);
+  EXPECT_FALSE(xml.empty());
+  auto deck = load_deck_from_string(xml, name, test::shared_dir() + "/decks/inputs/MPM");
+  double worst = 0, p_prev = 0, width = 0;
+  *checks = 0;
+  run_loaded_deck(std::move(deck), 1.2e-4, [&](double t, double dt, const MpmComponent& c) {
+    const MpmMaterial& mat = c.materials()[1];
+    const Particles& p = mat.particles;
+    const double ep = p.history[0][0], rate = p.history[1][0];
+    const double p_start = p_prev;
+    p_prev = -p.stress[0].trace() / 3.0;
+    if (t <= 0 || ep < 0.01 || !(rate > 0)) return;
+    const double q = von_mises(p.stress[0]);
+    const double rho = 8930.0 / p.F[0].determinant();
+    const double lo = law(SisterState{ep, rate, p.temperature[0], p_start, rho});
+    const double hi = law(SisterState{ep, rate, p.temperature[0] - mat.heating[0] * dt, p_start, rho});
+    EXPECT_LE(lo, hi);
+    worst = std::max(worst, q < lo ? (lo - q) / q : (q > hi ? (q - hi) / q : 0.0));
+    width = std::max(width, (hi - lo) / q);
+    *last_ep = ep;
+    *last_rate = rate;
+    ++*checks;
+  });
+  std::printf("%s: widest temperature bracket of the law (hi - lo)/q = %.2e\n", name.c_str(), width);
+  EXPECT_LT(width, 2e-3);  // the bracket is one step's heating wide: the check pins q to ~1e-3
+  return worst;
+}
+
+// ZA (VT 10.8-10.10) with the deck's constants: B = K = 0, so
+//   sigma_y = sigma_g + k_H sqrt_l_inv + B_0 sqrt(eps_p) exp(-(alpha_0 - alpha_1 ln eps_p_dot) T).
+TEST(MetalDecks, A4ZaSisterDeckFollowsTheZerilliArmstrongLaw) {
+  auto za = [](const SisterState& s) {
+    return 46.5e6 + 5.0e6 * 3.7 + 890e6 * std::sqrt(s.ep) * std::exp(-(0.0028 - 0.000115 * std::log(s.rate)) * s.T);
+  };
+  double ep = 0, rate = 0;
+  int checks = 0;
+  const double worst = check_sister_deck("adiCuZA4000s696K.ups", kZaBlocks, za, &ep, &rate, &checks);
+  std::printf("A4 ZA: %d checks, max excursion of q outside [ZA(T_p), ZA(T_p - heating dt)] %.3e, final eps_p %.4f, "
+              "eps_p_dot %.1f /s\n", checks, worst, ep, rate);
+  EXPECT_GT(checks, 100);
+  EXPECT_LT(worst, 1e-9);
+  EXPECT_GT(ep, 0.45);
+  EXPECT_NEAR(rate / 4000.0, 1.0, 0.02);
+}
+
+// SCG (VT 10.4-10.7) with the deck's constants and scg_shear (VT 7.6):
+//   sigma_y = [min(sigma_0 (1 + beta eps_p)^n, Y_max) + sigma_t] mu/mu_0,
+//   mu = mu_0 [1 + A p̄/eta^{1/3} - B (T - 300)],  eta = rho/rho_0,
+//   sigma_t in [0, sigma_P] solving eps_p_dot = [exp(2U_k/(k_B T) (1 - sigma_t/sigma_P)^2)/C1 + C2/sigma_t]^{-1}
+// (bisection here: the rate increases with sigma_t).
+TEST(MetalDecks, A4ScgSisterDeckFollowsTheSteinbergCochranGuinanLaw) {
+  auto scg = [](const SisterState& s) {
+    const double mu0 = 47.7e9, A = 28.0e-12, B = 0.92e-3, C1 = 0.71e6, C2 = 0.012e6, Uk = 0.31, kB = 8.617385e-5,
+                 sP = 0.5e8;
+    const double mu = mu0 * (1 + A * s.p_bar / std::cbrt(s.rho / 8930.0) - B * (s.T - 300.0));
+    auto rate_of = [&](double st) {
+      const double u = 1 - st / sP;
+      return 1.0 / (std::exp(2 * Uk / (kB * s.T) * u * u) / C1 + C2 / st);
+    };
+    double lo = 0, hi = sP;
+    if (rate_of(sP) <= s.rate) {
+      lo = sP;
+    } else {
+      for (int i = 0; i < 200; ++i) (rate_of(0.5 * (lo + hi)) < s.rate ? lo : hi) = 0.5 * (lo + hi);
+    }
+    const double sigma_t = 0.5 * (lo + hi);
+    return (std::min(0.125e9 * std::pow(1 + 36 * s.ep, 0.45), 0.64e9) + sigma_t) * mu / mu0;
+  };
+  double ep = 0, rate = 0;
+  int checks = 0;
+  const double worst = check_sister_deck("adiCuSCG4000s696K.ups", kScgBlocks, scg, &ep, &rate, &checks);
+  std::printf("A4 SCG: %d checks, max excursion of q outside [SCG(T_p), SCG(T_p - heating dt)] %.3e, final eps_p "
+              "%.4f, eps_p_dot %.1f /s\n", checks, worst, ep, rate);
+  EXPECT_GT(checks, 100);
+  EXPECT_LT(worst, 1e-9);
+  EXPECT_GT(ep, 0.45);
+  EXPECT_NEAR(rate / 4000.0, 1.0, 0.02);
+}
+
+// PTW (VT 10.24-10.28, psi = eps_p: inventory erratum) with the deck's constants:
+//   sigma_y = 2 mu [tau_s + a ln(1 - phi exp(-b - theta eps_p/(a phi)))],  a = (s0 - tau_y)/d,
+//   b = (tau_s - tau_y)/a,  phi = exp(b) - 1,  with r = eps_p_dot/(gamma xi_dot), z = kappa (T/T_m) ln(1/r):
+//   tau_s = max(s0 - (s0 - sinf) erf z, s0 r^beta),  tau_y = max(y0 - (y0 - yinf) erf z, min(y1 r^y2, s0 r^beta)),
+//   xi_dot = 1/2 (4 pi rho/(3 M))^{1/3} sqrt(mu/rho)  (M in kg: 63.54 amu).
+// mu (np_shear, VT 7.7-7.8) and T_m (scg_Tm, VT 13.1) come from the model's own shear and
+// melting sub-models at the start-of-step state (their closed forms: test_submodel_oracles).
+TEST(MetalDecks, A4PtwSisterDeckFollowsThePrestonTonksWallaceLaw) {
+  const auto deck = load_deck_from_string(sister_deck_text(kPtwBlocks), "adiCuPTW4000s696K.ups",
+                                          test::shared_dir() + "/decks/inputs/MPM");
+  auto component = make_mpm_component(*deck);
+  component->initialize();
+  const auto& model = static_cast<const ElasticPlastic&>(*component->materials()[1].model);
+  ASSERT_EQ(model.flow_->type(), "preston_tonks_wallace");
+  ASSERT_EQ(model.shear_->type(), "np_shear");
+  auto ptw = [&](const SisterState& s) {
+    PlasticState st;
+    st.temperature = s.T;
+    st.density0 = 8930.0;
+    st.density = s.rho;
+    st.pressure = s.p_bar;
+    st.melt_temperature = model.melt_->melt_temperature(st);
+    const double mu = model.shear_->shear_modulus(st), Tm = st.melt_temperature;
+    const double theta = 0.025, d = 2.0, s0 = 0.0085, sinf = 0.00055, kappa = 0.11, gamma = 1e-5, y0 = 1e-4,
+                 yinf = 1e-4, y1 = 0.094, y2 = 0.575, beta = 0.25, M = 63.54 * 1.66053906660e-27;
+    const double xi_dot = 0.5 * std::cbrt(4 * M_PI * s.rho / (3 * M)) * std::sqrt(mu / s.rho);
+    const double r = s.rate / (gamma * xi_dot), z = kappa * s.T / Tm * std::log(1 / r);
+    const double ts = std::max(s0 - (s0 - sinf) * std::erf(z), s0 * std::pow(r, beta));
+    const double ty = std::max(y0 - (y0 - yinf) * std::erf(z), std::min(y1 * std::pow(r, y2), s0 * std::pow(r, beta)));
+    if (ty >= ts) return 2 * mu * ts;
+    const double a = (s0 - ty) / d, b = (ts - ty) / a, phi = std::exp(b) - 1;
+    return 2 * mu * (ts + a * std::log(1 - phi * std::exp(-b - theta * s.ep / (a * phi))));
+  };
+  double ep = 0, rate = 0;
+  int checks = 0;
+  const double worst = check_sister_deck("adiCuPTW4000s696K.ups", kPtwBlocks, ptw, &ep, &rate, &checks);
+  std::printf("A4 PTW: %d checks, max excursion of q outside [PTW(T_p), PTW(T_p - heating dt)] %.3e, final eps_p "
+              "%.4f, eps_p_dot %.1f /s\n", checks, worst, ep, rate);
+  EXPECT_GT(checks, 100);
+  EXPECT_LT(worst, 1e-9);
+  EXPECT_GT(ep, 0.45);
+  EXPECT_NEAR(rate / 4000.0, 1.0, 0.02);
+}
+
+// A sister deck through the executable, to its end (3e-4 s): exit 0, no NaN (one test per deck:
+// ~10 s each).
+void run_sister_deck_executable(const std::string& name, const char* blocks) {
+  const fs::path dir = fs::path(test::scratch_dir("metal_sister_" + name));
+  const fs::path deck = dir / (name + ".ups");  // the sister blocks include nothing
+  std::ofstream(deck) << sister_deck_text(blocks);
+  std::string out;
+  ASSERT_EQ(test::run_tephra(deck.string() + " --quiet --output " + (dir / "out").string(), &out), 0) << out;
+  std::ifstream in(dir / "out" / "BndyForce_zplus.dat");
+  ASSERT_TRUE(in);
+  std::string line;
+  int rows = 0;
+  while (std::getline(in, line)) {
+    ++rows;
+    EXPECT_EQ(line.find("nan"), std::string::npos) << line;
+  }
+  EXPECT_GE(rows, 250);  // outputInterval 1e-6 over 3e-4 s
+}
+TEST(MetalDecks, A4PtwSisterRunsToTheEndThroughTheExecutable) {
+  run_sister_deck_executable("adiCuPTW4000s696K", kPtwBlocks);
+}
+TEST(MetalDecks, A4ScgSisterRunsToTheEndThroughTheExecutable) {
+  run_sister_deck_executable("adiCuSCG4000s696K", kScgBlocks);
+}
+TEST(MetalDecks, A4ZaSisterRunsToTheEndThroughTheExecutable) {
+  run_sister_deck_executable("adiCuZA4000s696K", kZaBlocks);
 }
 
 // The deck through the executable: every saved label exists, the run ends with exit 0.
