@@ -73,6 +73,9 @@ class IceComponent final : public Component {
   void lagrangian_values_and_exchange(double dt);
   void compute_diffusion_sources(std::size_t m, std::size_t pi);
   void advect_and_advance(double dt, int step);
+  // Specific volume of material m as the volume content M v = theta V
+  // (a density-like quantity, IceAdvectVolume.cpp); needs flux_ and mass_new_ of m.
+  void advect_specific_volume(std::size_t m, double dt);
   // Total-energy corrections (IceEnergy.cpp, <conserveTotalEnergy>): the
   // face-pressure work in the Lagrangian phase and DeBar's kinetic energy
   // lost by the advection.

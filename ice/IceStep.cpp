@@ -503,10 +503,10 @@ void IceComponent::advect_and_advance(double dt, int step) {
         f.rho_CC[pi](i, j, k) = mass / V;
         f.vel_CC[pi](i, j, k) = (mass_L * vel_L_[m][pi](i, j, k) + dqv_[pi](i, j, k)) / mass;
       });
-    // Temperature (c_v constant per material) and specific volume.
-    for (int q = 0; q < 2; ++q) {
-      const CellScalars& psi = q == 0 ? temp_L_[m] : spv_L_[m];
-      CellScalars& out = q == 0 ? f.temp_CC : f.sp_vol_CC;
+    // Temperature (c_v constant per material).
+    {
+      const CellScalars& psi = temp_L_[m];
+      CellScalars& out = f.temp_CC;
       specific_fluxes(g, setup_.advection, psi, f.vel_FCME, flux_, dt, flux2_);
       flux_divergence(g, flux2_, dq_);
       for (std::size_t pi = 0; pi < g.patches.size(); ++pi)
@@ -514,6 +514,7 @@ void IceComponent::advect_and_advance(double dt, int step) {
           out[pi](i, j, k) = (mass_L_[m][pi](i, j, k) * psi[pi](i, j, k) + dq_[pi](i, j, k)) / mass_new_[pi](i, j, k);
         });
     }
+    advect_specific_volume(m, dt);  // IceAdvectVolume.cpp
     if (setup_.conserve_total_energy && mats_.size() == 1) add_advected_kinetic_energy_loss(m);  // IceEnergy.cpp
     if (model_src_) advect_model_scalars(m, dt);
     apply_state_bcs(m);
