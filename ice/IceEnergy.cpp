@@ -30,14 +30,10 @@
 //    and (M c_v T)_new += D. The kinetic-energy fluxes 1/2 F |u_slab|^2 are
 //    face fluxes, so sum_c (K_new + D) = sum_c K_L + boundary fluxes. For
 //    first-order (donor-cell) fluxes D >= 0 by convexity of |p|^2/M.
-// Applied to single-material runs only: with several materials the
-// per-material split above (each material's own swept volume and pressure
-// impulse) gave trace materials (theta ~ 1e-6) corrections far beyond their
-// internal energy (negative temperatures in a two-material block advection
-// and the LightTime deck); a mass-weighted split of the cell's correction is
-// the untried next step (docs/ice.md). The kinetic energy that the
-// inter-material momentum exchange removes is not returned either (Uintah
-// neither).
+// Mixtures of ICE materials (below, "Mixtures"): the cell's corrections are
+// computed from the material sums and split among the materials by mass, and
+// the kinetic energy the momentum exchange removes is returned as heat.
+// MPMICE runs keep Uintah's equations.
 #include <cmath>
 #include <stdexcept>
 
