@@ -54,6 +54,7 @@ void IceComponent::initialize() {
   flux_ = FaceScalars(g, 0);
   flux2_ = FaceScalars(g, 0);
   mass_new_ = CellScalars(g, kGhosts);
+  content_ = CellScalars(g, kGhosts);
   flux_v_ = FaceData<Vec3>(g, 0);
   dq_ = CellScalars(g, kGhosts);
   sum_kappa_ = CellScalars(g, kGhosts);

@@ -79,12 +79,24 @@ class IceComponent final : public Component {
   void lagrangian_values_and_exchange(double dt);
   void compute_diffusion_sources(std::size_t m, std::size_t pi);
   void advect_and_advance(double dt, int step);
+  // out = psi of material m after advection, psi_L advected as the content
+  // M_L psi_L, a density-like quantity (IceAdvectContent.cpp); needs mass_new_ of m.
+  void advect_content(std::size_t m, const CellScalars& psi_L, CellScalars& out, double dt);
   // Total-energy corrections (IceEnergy.cpp, <conserveTotalEnergy>): the
   // face-pressure work in the Lagrangian phase and DeBar's kinetic energy
   // lost by the advection.
+  // Mixture (two or more ICE materials, none lagrangian): the cell's
+  // corrections and the kinetic energy the momentum exchange removes, split
+  // among the materials by mass.
+  enum class EnergyCorrection { None, Single, Mixture };
+  EnergyCorrection energy_correction() const;
   void face_pressure_work(double dt);
   void add_face_pressure_work(std::size_t m, std::size_t pi, double dt);
   void add_advected_kinetic_energy_loss(std::size_t m);
+  void mixture_face_pressure_work(double dt);
+  void add_mixture_face_pressure_work(std::size_t pi, double dt);
+  void add_exchange_kinetic_energy_loss(std::size_t pi);
+  void add_mixture_advected_kinetic_energy_loss();
   // Source models (IceModelStep.cpp, ice/models/): their sources, the volume
   // fractions they change, the mass-exchange pressure term, and their scalars.
   void allocate_model_storage();
@@ -128,6 +140,7 @@ class IceComponent final : public Component {
   FaceScalars flux_, flux2_;
   FaceData<Vec3> flux_v_;
   CellScalars dq_, sum_kappa_, mass_new_;
+  CellScalars content_;  // M_L psi_L of advect_content (scratch)
   CellVectors dqv_;
   // Viscous force and conduction of the current material (Diffusion.h), and
   // the velocity/temperature with the wall-mirrored extra cells they use.

@@ -30,14 +30,10 @@
 //    and (M c_v T)_new += D. The kinetic-energy fluxes 1/2 F |u_slab|^2 are
 //    face fluxes, so sum_c (K_new + D) = sum_c K_L + boundary fluxes. For
 //    first-order (donor-cell) fluxes D >= 0 by convexity of |p|^2/M.
-// Applied to single-material runs only: with several materials the
-// per-material split above (each material's own swept volume and pressure
-// impulse) gave trace materials (theta ~ 1e-6) corrections far beyond their
-// internal energy (negative temperatures in a two-material block advection
-// and the LightTime deck); a mass-weighted split of the cell's correction is
-// the untried next step (docs/ice.md). The kinetic energy that the
-// inter-material momentum exchange removes is not returned either (Uintah
-// neither).
+// Mixtures of ICE materials (below, "Mixtures"): the cell's corrections are
+// computed from the material sums and split among the materials by mass, and
+// the kinetic energy the momentum exchange removes is returned as heat.
+// MPMICE runs keep Uintah's equations.
 #include <cmath>
 #include <stdexcept>
 
@@ -102,9 +98,11 @@ void IceComponent::add_face_pressure_work(std::size_t m, std::size_t pi, double 
 
 // Correction 2 for material m, after the advection of mass (flux_, mass_new_),
 // momentum (flux_v_, vel_CC) and temperature (temp_CC): adds D/(M_new c_v)
-// to temp_CC. Uses flux2_ and dq_ as scratch.
+// to temp_CC (one material) or to work_corr_[0] (a mixture: split by mass in
+// add_mixture_advected_kinetic_energy_loss). Uses flux2_ and dq_ as scratch.
 void IceComponent::add_advected_kinetic_energy_loss(std::size_t m) {
   const Grid& g = setup_.grid;
+  const bool mixture = energy_correction() == EnergyCorrection::Mixture;
   IceMaterialFields& f = mats_[m];
   for (std::size_t pi = 0; pi < g.patches.size(); ++pi)
     for (int d = 0; d < 3; ++d) {
@@ -123,8 +121,137 @@ void IceComponent::add_advected_kinetic_energy_loss(std::size_t m) {
       const double m_L = mass_L_[m][pi](i, j, k), m_new = mass_new_[pi](i, j, k);
       const double ke_adv = 0.5 * m_L * vel_L_[m][pi](i, j, k).squaredNorm() + dq_[pi](i, j, k);
       const double loss = ke_adv - 0.5 * m_new * f.vel_CC[pi](i, j, k).squaredNorm();
-      f.temp_CC[pi](i, j, k) += loss / (m_new * cv_CC_[m][pi](i, j, k));
+      if (mixture) work_corr_[0][pi](i, j, k) += loss;  // split among the materials afterwards
+      else f.temp_CC[pi](i, j, k) += loss / (m_new * cv_CC_[m][pi](i, j, k));
     });
+}
+
+// ---- Mixtures of ICE materials -------------------------------------------
+// With several materials the cell's correction is computed from the
+// material sums and split by mass: material m gets the fraction
+// M_m / sum_n M_n of it. Each piece below changes the cell's total energy
+// sum_m M_m (c_v,m T_m + |u_m|^2/2) by a face flux only (or not at all), so
+// sum over the cells is conserved to round-off in a closed box:
+//  a. Lagrangian phase: C = V sum_f p*_f sum_m A_f,m - sum_m V theta_m kappa_m p delP
+//                          - sum_m F_p,m . (u_m + u_L,m)/2,
+//     the same identity as for one material, summed over m (sum_m theta_m
+//     kappa_m delP = sum_m A_m).
+//  b. Momentum exchange (Exchange.h): conserves sum_m M_m u_m and dissipates
+//     kinetic energy, L = sum_m (|M u_L|^2/(2 M) - M |u_L^ME|^2/2) >= 0; L is
+//     returned as heat (Uintah does not). The heat exchange conserves
+//     sum_m M_m c_v,m T_m (M_m c_v,m beta_mn = dt V theta_m theta_n H_mn symmetric).
+//  c. Advection: D = sum_m D_m, DeBar's correction of each material's own
+//     mass and momentum fluxes.
+// The earlier per-material split (each material keeping its own C_m and D_m)
+// gave trace materials (theta ~ 1e-6) corrections far beyond their internal
+// energy (negative temperatures in a two-material block advection and in
+// LightTime.ups); by mass, a trace material gets a trace of the correction.
+// MPMICE runs (a lagrangian material) keep Uintah's equations: the solid's
+// energy lives on the particles.
+IceComponent::EnergyCorrection IceComponent::energy_correction() const {
+  if (!setup_.conserve_total_energy) return EnergyCorrection::None;
+  if (mats_.size() == 1) return EnergyCorrection::Single;
+  for (const IceMaterialSpec& spec : setup_.materials)
+    if (spec.lagrangian) return EnergyCorrection::None;
+  return EnergyCorrection::Mixture;
+}
+
+// a, first part: work_corr_[0] = V sum_f p*_f sum_m A_f,m - sum_m V theta_m kappa_m p delP.
+// The volume-fraction fluxes of every material are recomputed (flux_ holds
+// only the last material's after sum_volume_flux_and_kappa); their sum goes to flux2_.
+void IceComponent::mixture_face_pressure_work(double dt) {
+  const Grid& g = setup_.grid;
+  const double V = g.cell_volume();
+  for (int d = 0; d < 3; ++d)
+    for (std::size_t pi = 0; pi < g.patches.size(); ++pi) flux2_.at(d, pi).fill(0.0);
+  for (std::size_t m = 0; m < mats_.size(); ++m) {
+    density_fluxes(g, setup_.advection, mats_[m].vol_frac_CC, mats_[m].vel_FCME, dt, flux_);
+    for (int d = 0; d < 3; ++d)
+      for (std::size_t pi = 0; pi < g.patches.size(); ++pi) {
+        double* a = flux2_.at(d, pi).data();
+        const double* b = flux_.at(d, pi).data();
+        const std::size_t n = flux2_.at(d, pi).size();
+        for (std::size_t c = 0; c < n; ++c) a[c] += b[c];
+      }
+  }
+  for (std::size_t pi = 0; pi < g.patches.size(); ++pi)
+    for_each_cell(g.patches[pi].cells(), [&](int i, int j, int k) {
+      const IntVec3 c(i, j, k);
+      double work = 0;
+      for (int d = 0; d < 3; ++d) {
+        const IntVec3 hi(c + IntVec3::Unit(d));
+        const GridArray<double>& pf = press_FC_.at(d, pi);
+        const GridArray<double>& A = flux2_.at(d, pi);
+        work += pf(c) * A(c) - pf(hi) * A(hi);
+      }
+      double cell_work = 0;
+      for (const IceMaterialFields& f : mats_) {
+        const double ss = f.speedSound_CC[pi](c);
+        cell_work += V * f.vol_frac_CC[pi](c) * f.sp_vol_CC[pi](c) / (ss * ss) * press_CC_[pi](c) * delP_Dilatate_[pi](c);
+      }
+      work_corr_[0][pi](c) = V * work - cell_work;
+    });
+}
+
+// a, second part, once every material's Lagrangian momentum and internal
+// energy of patch pi are known (before the exchange).
+void IceComponent::add_mixture_face_pressure_work(std::size_t pi, double dt) {
+  const Grid& g = setup_.grid;
+  const double V = g.cell_volume();
+  for_each_cell(g.patches[pi].cells(), [&](int i, int j, int k) {
+    const IntVec3 c(i, j, k);
+    Vec3 grad_p;
+    for (int d = 0; d < 3; ++d) {
+      const GridArray<double>& pf = press_FC_.at(d, pi);
+      grad_p[d] = (pf(IntVec3(c + IntVec3::Unit(d))) - pf(c)) / g.dx[d];
+    }
+    double corr = work_corr_[0][pi](c), mass_sum = 0;
+    for (std::size_t m = 0; m < mats_.size(); ++m) {
+      const IceMaterialFields& f = mats_[m];
+      // u_L = (Mu)_L / M_L before the exchange (vel_L_): with a model mass source the
+      // pre-source mass of a trace product would turn its momentum source into a huge velocity.
+      const Vec3 impulse = -dt * V * f.vol_frac_CC[pi](c) * grad_p;
+      corr -= impulse.dot(0.5 * (f.vel_CC[pi](c) + vel_L_[m][pi](c)));
+      mass_sum += mass_L_[m][pi](c);
+    }
+    for (std::size_t m = 0; m < mats_.size(); ++m) {
+      IceMaterialFields& f = mats_[m];
+      const double mass_L = mass_L_[m][pi](c);
+      f.int_eng_L_CC[pi](c) += corr * (mass_L / mass_sum);
+      temp_L_[m][pi](c) = f.int_eng_L_CC[pi](c) / (mass_L * cv_CC_[m][pi](c));
+    }
+  });
+}
+
+// b: the kinetic energy the momentum exchange removed, as heat, split by mass.
+// mom_L_CC is the Lagrangian momentum before the exchange, vel_L_ the velocity after it.
+void IceComponent::add_exchange_kinetic_energy_loss(std::size_t pi) {
+  const Grid& g = setup_.grid;
+  for_each_cell(g.patches[pi].cells(), [&](int i, int j, int k) {
+    const IntVec3 c(i, j, k);
+    double loss = 0, mass_sum = 0;
+    for (std::size_t m = 0; m < mats_.size(); ++m) {
+      const double mass_L = mass_L_[m][pi](c);
+      loss += 0.5 * (mats_[m].mom_L_CC[pi](c).squaredNorm() / mass_L - mass_L * vel_L_[m][pi](c).squaredNorm());
+      mass_sum += mass_L;
+    }
+    for (std::size_t m = 0; m < mats_.size(); ++m) temp_L_[m][pi](c) += loss / (mass_sum * cv_CC_[m][pi](c));
+  });
+}
+
+// c: D = sum_m D_m (accumulated in work_corr_[0] by add_advected_kinetic_energy_loss),
+// material m gets M_m/sum M of it: T_m += D/(sum_n M_n c_v,m); then the state BCs again.
+void IceComponent::add_mixture_advected_kinetic_energy_loss() {
+  const Grid& g = setup_.grid;
+  const double V = g.cell_volume();
+  for (std::size_t pi = 0; pi < g.patches.size(); ++pi)
+    for_each_cell(g.patches[pi].cells(), [&](int i, int j, int k) {
+      double mass_sum = 0;
+      for (const IceMaterialFields& f : mats_) mass_sum += f.rho_CC[pi](i, j, k) * V;
+      const double D = work_corr_[0][pi](i, j, k);
+      for (std::size_t m = 0; m < mats_.size(); ++m) mats_[m].temp_CC[pi](i, j, k) += D / (mass_sum * cv_CC_[m][pi](i, j, k));
+    });
+  for (std::size_t m = 0; m < mats_.size(); ++m) apply_state_bcs(m);
 }
 
 }  // namespace tephra

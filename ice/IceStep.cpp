@@ -260,9 +260,11 @@ void IceComponent::lagrangian_values_and_exchange(double dt) {
   const Grid& g = setup_.grid;
   const std::size_t nm = mats_.size();
   const double V = g.cell_volume();
-  // Single-material runs only (IceEnergy.cpp): with several materials the per-material
-  // split of the correction heated trace materials to negative temperatures (docs/ice.md).
-  if (setup_.conserve_total_energy && mats_.size() == 1) face_pressure_work(dt);  // IceEnergy.cpp
+  // Total-energy corrections (IceEnergy.cpp): one material, or a mixture of
+  // ICE materials with the cell's correction split by mass (docs/ice.md).
+  const EnergyCorrection energy = energy_correction();
+  if (energy == EnergyCorrection::Single) face_pressure_work(dt);
+  if (energy == EnergyCorrection::Mixture) mixture_face_pressure_work(dt);
   for (std::size_t pi = 0; pi < g.patches.size(); ++pi) {
     const Patch& patch = g.patches[pi];
     // Momentum and energy sources, Lagrangian values.
@@ -313,8 +315,9 @@ void IceComponent::lagrangian_values_and_exchange(double dt) {
         vel_L_[m][pi](c) = mom_L / mass_L;
         temp_L_[m][pi](c) = eint_L / (mass_L * cv);
       });
-      if (setup_.conserve_total_energy && mats_.size() == 1) add_face_pressure_work(m, pi, dt);  // IceEnergy.cpp
+      if (energy == EnergyCorrection::Single) add_face_pressure_work(m, pi, dt);  // IceEnergy.cpp
     }
+    if (energy == EnergyCorrection::Mixture) add_mixture_face_pressure_work(pi, dt);  // IceEnergy.cpp
     // Momentum and heat exchange, cell by cell.
     if (nm > 1) {
       for_each_cell(patch.cells(), [&](int i, int j, int k) {
@@ -339,6 +342,7 @@ void IceComponent::lagrangian_values_and_exchange(double dt) {
           temp_L_[m][pi](c) = T[m];
         }
       });
+      if (energy == EnergyCorrection::Mixture) add_exchange_kinetic_energy_loss(pi);  // IceEnergy.cpp
     }
     // Specific volume (eq. 26.13). beta from the EOS, one call per material.
     // One material: f_theta = theta kappa / theta kappa = 1 exactly, so the
@@ -491,6 +495,8 @@ void IceComponent::compute_diffusion_sources(std::size_t m, std::size_t pi) {
 void IceComponent::advect_and_advance(double dt, int step) {
   const Grid& g = setup_.grid;
   const double V = g.cell_volume();
+  const EnergyCorrection energy = energy_correction();
+  if (energy == EnergyCorrection::Mixture) work_corr_[0].fill(0.0);  // sum over materials of D (IceEnergy.cpp)
   for (std::size_t m = 0; m < mats_.size(); ++m) {
     if (setup_.materials[m].lagrangian) continue;  // MPMICE solid: the particles carry it (mpmice/)
     IceMaterialFields& f = mats_[m];
@@ -509,21 +515,14 @@ void IceComponent::advect_and_advance(double dt, int step) {
         f.rho_CC[pi](i, j, k) = mass / V;
         f.vel_CC[pi](i, j, k) = (mass_L * vel_L_[m][pi](i, j, k) + dqv_[pi](i, j, k)) / mass;
       });
-    // Temperature (c_v constant per material) and specific volume.
-    for (int q = 0; q < 2; ++q) {
-      const CellScalars& psi = q == 0 ? temp_L_[m] : spv_L_[m];
-      CellScalars& out = q == 0 ? f.temp_CC : f.sp_vol_CC;
-      specific_fluxes(g, setup_.advection, psi, f.vel_FCME, flux_, dt, flux2_);
-      flux_divergence(g, flux2_, dq_);
-      for (std::size_t pi = 0; pi < g.patches.size(); ++pi)
-        for_each_cell(g.patches[pi].cells(), [&](int i, int j, int k) {
-          out[pi](i, j, k) = (mass_L_[m][pi](i, j, k) * psi[pi](i, j, k) + dq_[pi](i, j, k)) / mass_new_[pi](i, j, k);
-        });
-    }
-    if (setup_.conserve_total_energy && mats_.size() == 1) add_advected_kinetic_energy_loss(m);  // IceEnergy.cpp
+    // Temperature and specific volume, advected as the contents M T and M v (IceAdvectContent.cpp).
+    advect_content(m, temp_L_[m], f.temp_CC, dt);
+    advect_content(m, spv_L_[m], f.sp_vol_CC, dt);
+    if (energy != EnergyCorrection::None) add_advected_kinetic_energy_loss(m);  // IceEnergy.cpp
     if (model_src_) advect_model_scalars(m, dt);
     apply_state_bcs(m);
   }
+  if (energy == EnergyCorrection::Mixture) add_mixture_advected_kinetic_energy_loss();  // IceEnergy.cpp
 }
 
 }  // namespace tephra

@@ -13,7 +13,7 @@
 //    specific volume keeps p = (gamma-1) E uniform, so p and u must stay
 //    uniform to the solver tolerance, and with a uniform face velocity the
 //    centroid of the density deficit moves by u t (the deficit is zero where
-//    the periodic face wraps). Observed: |p/p0 - 1| 2e-14, |u - 1| 2e-10,
+//    the periodic face wraps). Observed: |p/p0 - 1| 8.4e-13, |u - 1| 1.1e-11,
 //    centroid shift 0.25 to 1e-9 in 41 steps (second order). Implicit with knob 0 takes
 //    dt = cfl dx/|u|, explicit dt = cfl dx/(c + |u|): ratio (c + u)/u ~ 348.
 // 3. The unmodified orderAccuracy/ICE/rayleigh.ups (periodic in x,

@@ -11,7 +11,7 @@
 // error converges slower than the pressure error; Toro sec. 6.4). Observed
 // (N = 100/200/400/800, orders per doubling) with <conserveTotalEnergy>
 // (default; docs/ice.md "Total energy at shocks"): first order rho 0.59 0.64
-// 0.64, p 0.78 0.78 0.82; second order rho 0.82 0.86 0.87, p 0.92 0.89 0.96,
+// 0.64, p 0.78 0.78 0.82; second order rho 0.84 0.85 0.87, p 0.93 0.88 0.96,
 // asserted >= 0.8 for every doubling (the brief's target). Star states at
 // N = 800 (second order): p*, u*, rho*R within 0.01 %, rho*L -0.08 %
 // (asserted 0.3 %; first order 0.5 %: rho*L -0.34 %). Uintah's energy
@@ -158,13 +158,15 @@ TEST(IceRiemann, ToroTest1ConvergesToTheExactSolution) {
 // ICE with NumericalFailure) with rho_CC > 0 and press_CC > 0 in every cell
 // after every step, and the L1 errors of rho and p fall from N = 100 to 200.
 // Measured L1(rho) N = 100 -> 200 (docs/ice.md): 3: 0.21 -> 0.16 (first),
-// 0.083 -> 0.061 (second); 4: 0.91 -> 0.61, 0.48 -> 0.26; 5: 0.12 -> 0.083,
-// 0.13 -> 0.079. Without the energy correction tests 3-5 (second order) and 4
+// 0.10 -> 0.070 (second); 4: 0.91 -> 0.61, 0.51 -> 0.27; 5: 0.12 -> 0.083,
+// 0.13 -> 0.080. Without the energy correction tests 3-5 (second order) and 4
 // (both) did not converge (Toro 4 second order 2.41 -> 2.46).
-// Known gap, asserted so that a fix shows up: Toro 2 with SecondOrder stops
-// at step 80 (N = 100) with a negative sp_vol_CC in a nearly emptied cell
-// (compatible second-order fluxes of a specific quantity are not bounded
-// when a cell loses almost all its mass; first order is).
+// Toro 2 with SecondOrder used to stop at step 80 (N = 100) with a negative
+// sp_vol_CC in a nearly emptied cell: the compatible flux F_M v_slab carried
+// several times the swept volume where rho changes by orders of magnitude
+// between neighbours. T and v of one material are now advected as the
+// contents M T, M v (ice/IceAdvectContent.cpp); Toro 2 converges at both orders
+// (Toro2ConvergesAtBothOrders below).
 struct ToroCase {
   int id;
   GasState L, R;
@@ -301,10 +303,6 @@ TEST(IceRiemann, ToroTests2To5KeepDensityAndPressurePositive) {
   set_thread_count(1);
   for (const ToroCase& c : kToro) {
     for (const char* adv : {"FirstOrder", "SecondOrder"}) {
-      if (c.id == 2 && std::string(adv) == "SecondOrder") {
-        EXPECT_THROW(run_toro(c, 100, adv, 0.4), NumericalFailure) << "Toro 2 second order now runs: assert positivity";
-        continue;
-      }
       const ToroResult a = run_toro(c, 100, adv, 0.4), b = run_toro(c, 200, adv, 0.4);
       std::printf("Toro %d %s: N=100/200 L1(rho) %.4g %.4g  L1(u) %.4g %.4g  L1(p) %.4g %.4g; min rho %.3g, min p %.3g (%d steps)\n",
                   c.id, adv, a.e.rho, b.e.rho, a.e.u, b.e.u, a.e.p, b.e.p, std::min(a.min_rho, b.min_rho),
@@ -315,6 +313,43 @@ TEST(IceRiemann, ToroTests2To5KeepDensityAndPressurePositive) {
       // second order and 4 first order did not): L1 falls from N = 100 to 200.
       EXPECT_LT(b.e.rho, a.e.rho) << "Toro " << c.id << " " << adv;
       EXPECT_LT(b.e.p, a.e.p) << "Toro " << c.id << " " << adv;
+    }
+  }
+}
+
+// Toro's test 2 (the 123 problem: two rarefactions leave a near-vacuum,
+// exact star state p* = 0.00189, rho* = 0.0219, u* = 0; Toro table 4.3) at
+// N = 100, 200, 400, both orders: rho and p stay positive after every step,
+// the L1 errors of rho, u and p against the exact solution fall at every
+// doubling. Measured second order L1(rho) 0.0173/0.0095/0.0050, first order
+// 0.0363/0.0243/0.0159 (docs/ice.md). ICE's cell-centred
+// velocity empties the centre cells far below rho* (min rho ~1e-6 at second
+// order, ~1e-4 at first): the positivity is the point of this test, the
+// centre's density is the scheme's known weakness (Toro sec. 6.4 "the 123
+// problem": most conservative schemes overheat / underfill the centre).
+TEST(IceRiemann, Toro2ConvergesAtBothOrders) {
+  set_thread_count(1);
+  const ToroCase& c = kToro[0];
+  ASSERT_EQ(c.id, 2);
+  const ExactRiemann ex(c.L, c.R, 1.4);
+  EXPECT_NEAR(ex.p_star(), 0.00189, 1e-5);  // Toro table 4.3, test 2
+  EXPECT_NEAR(ex.u_star(), 0.0, 1e-12);
+  for (const char* adv : {"FirstOrder", "SecondOrder"}) {
+    ToroResult r[3];
+    const int n[3] = {100, 200, 400};
+    for (int k = 0; k < 3; ++k) r[k] = run_toro(c, n[k], adv, 0.4);
+    std::printf("Toro 2 %s: N=100/200/400 L1(rho) %.4g %.4g %.4g  L1(u) %.4g %.4g %.4g  L1(p) %.4g %.4g %.4g; "
+                "min rho %.3g %.3g %.3g, min p %.3g %.3g %.3g\n",
+                adv, r[0].e.rho, r[1].e.rho, r[2].e.rho, r[0].e.u, r[1].e.u, r[2].e.u, r[0].e.p, r[1].e.p, r[2].e.p,
+                r[0].min_rho, r[1].min_rho, r[2].min_rho, r[0].min_p, r[1].min_p, r[2].min_p);
+    for (int k = 0; k < 3; ++k) {
+      EXPECT_GT(r[k].min_rho, 0.0) << adv << " N=" << n[k];
+      EXPECT_GT(r[k].min_p, 0.0) << adv << " N=" << n[k];
+    }
+    for (int k = 0; k + 1 < 3; ++k) {
+      EXPECT_LT(r[k + 1].e.rho, r[k].e.rho) << adv << " N=" << n[k];
+      EXPECT_LT(r[k + 1].e.u, r[k].e.u) << adv << " N=" << n[k];
+      EXPECT_LT(r[k + 1].e.p, r[k].e.p) << adv << " N=" << n[k];
     }
   }
 }
