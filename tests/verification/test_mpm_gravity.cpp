@@ -89,8 +89,14 @@ TEST(MpmGravity, FreeFallIsSymplecticEulerToRoundOff) {
   }
 }
 
-// Max over the particles of |sigma_zz + rho g (H - Z)| / (rho g H) at rest on the floor.
-double column_error(int cells, double* residual_speed) {
+struct ColumnError {
+  double max = 0;    // max over the particles of |sigma_zz + rho g (H - Z)| / (rho g H)
+  double z_max = 0;  // reference height Z / H of that particle
+  double rms = 0;    // root mean square of the same
+  double speed = 0;  // largest particle speed left [m/s]
+};
+
+ColumnError column_error(int cells) {
   const double H = 1.0, rho = 1000.0, g = 10.0, K = 1e6, G = 0.5e6;
   const double h = H / cells;
   MpmSetup s;
@@ -112,28 +118,40 @@ double column_error(int cells, double* residual_speed) {
     t += dt;
   }
   const Particles& p = c.materials()[0].particles;
-  double err = 0, vmax = 0;
+  ColumnError r;
+  double sum2 = 0;
   for (std::size_t i = 0; i < p.size(); ++i) {
     const double Z = p.x[i][2] - p.displacement[i][2];
-    err = std::max(err, std::abs(p.stress[i](2, 2) + rho * g * (H - Z)) / (rho * g * H));
-    vmax = std::max(vmax, p.v[i].norm());
+    const double e = std::abs(p.stress[i](2, 2) + rho * g * (H - Z)) / (rho * g * H);
+    if (e > r.max) r.max = e, r.z_max = Z / H;
+    sum2 += e * e;
+    r.speed = std::max(r.speed, p.v[i].norm());
   }
-  *residual_speed = vmax;
-  return err;
+  r.rms = std::sqrt(sum2 / double(p.size()));
+  return r;
 }
 
+// The residual motion can carry a stress of order rho c |v|; the run is
+// static when that is below 1e-4 rho g H, i.e. |v| < 1e-4 g H / c
+// (= 2.45e-5 m/s here). Tolerance on the static error: 2 % of rho g H at
+// 40 cells, and the error must fall with h.
 TEST(MpmGravity, ColumnOnAFloorSettlesToTheLithostaticStress) {
   const int cells[3] = {10, 20, 40};
-  double err[3], speed[3];
-  for (int k = 0; k < 3; ++k) err[k] = column_error(cells[k], &speed[k]);
-  std::printf("column under gravity: max |sigma_zz + rho g (H - Z)| / (rho g H) = %.3e %.3e %.3e at 10/20/40 cells "
-              "(orders %.2f %.2f); residual speed %.1e %.1e %.1e m/s\n",
-              err[0], err[1], err[2], std::log2(err[0] / err[1]), std::log2(err[1] / err[2]), speed[0], speed[1],
-              speed[2]);
-  for (int k = 0; k < 3; ++k) EXPECT_LT(speed[k], 1e-6);
-  EXPECT_LT(err[2], 0.02);
-  EXPECT_LT(err[1], err[0]);
-  EXPECT_LT(err[2], err[1]);
+  ColumnError e[3];
+  for (int k = 0; k < 3; ++k) e[k] = column_error(cells[k]);
+  std::printf("column under gravity, 10/20/40 cells: max |sigma_zz + rho g (H - Z)| / (rho g H) = %.3e %.3e %.3e "
+              "(orders %.2f %.2f; at Z/H = %.3f %.3f %.3f), rms %.3e %.3e %.3e (orders %.2f %.2f); residual speed "
+              "%.1e %.1e %.1e m/s\n",
+              e[0].max, e[1].max, e[2].max, std::log2(e[0].max / e[1].max), std::log2(e[1].max / e[2].max),
+              e[0].z_max, e[1].z_max, e[2].z_max, e[0].rms, e[1].rms, e[2].rms, std::log2(e[0].rms / e[1].rms),
+              std::log2(e[1].rms / e[2].rms), e[0].speed, e[1].speed, e[2].speed);
+  const double c_wave = std::sqrt((1e6 + 4 * 0.5e6 / 3) / 1000.0);
+  for (int k = 0; k < 3; ++k) EXPECT_LT(e[k].speed, 1e-4 * 10.0 * 1.0 / c_wave);
+  EXPECT_LT(e[2].max, 0.02);
+  EXPECT_LT(e[1].max, e[0].max);
+  EXPECT_LT(e[2].max, e[1].max);
+  EXPECT_LT(e[1].rms, e[0].rms);
+  EXPECT_LT(e[2].rms, e[1].rms);
 }
 
 }  // namespace
