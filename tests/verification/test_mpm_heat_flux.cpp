@@ -15,6 +15,8 @@
 
 #include "core/base/Errors.h"
 #include "core/deck/DeckLoader.h"
+#include "core/deck/Schema.h"
+#include "core/deck/Validate.h"
 #include "core/geometry/Primitives.h"
 #include "models/solid/CompNeoHookean.h"
 #include "mpm/MpmComponent.h"
@@ -115,6 +117,21 @@ TEST(MpmHeatFlux, Parsing) {
   EXPECT_EQ(l.heat_flux[0].area, 6.0);
   EXPECT_TRUE(loads(hf + "</heat_flux>", false).heat_flux.empty());  // needs <use_load_curves>
   EXPECT_THROW(loads(hf + "<bogus/></heat_flux>", true), DeckError);
+  // Vaango's spec types the curve's time and load INTEGER; its HeatFluxBC reads
+  // doubles, and so does Tephra's schema (core/deck/schema/ups_schema_extensions.txt):
+  // no "expected an integer" problem for the fractional values (the fragment
+  // lacks <Grid> etc., which check_deck also reports; those are ignored).
+  auto d = load_deck_from_string(
+      "<Uintah_specification><PhysicalBC><MPM><heat_flux><geom_object><box><min>[0,0,0]</min><max>[0,2,3]</max>"
+      "</box></geom_object><load_curve><id>1</id><time_point><time>0</time><load>0</load></time_point>"
+      "<time_point><time>0.5e-3</time><load>1.5e4</load></time_point></load_curve></heat_flux></MPM></PhysicalBC>"
+      "</Uintah_specification>",
+      "t.ups", ".");
+  for (const DeckProblem& problem : check_deck(d->root, Schema::builtin()))
+    EXPECT_EQ(problem.message.find("integer"), std::string::npos) << problem.message;
+  const ParticleLoads f = parse_particle_loads(d->root.child("PhysicalBC"), true);
+  ASSERT_EQ(f.heat_flux.size(), 1u);
+  EXPECT_DOUBLE_EQ(f.heat_flux[0].curve.at(0.25e-3), 0.75e4);
 }
 
 }  // namespace
