@@ -302,8 +302,14 @@ void MpmComponent::advance(double t, double dt, int step) {
     }
   //    <PhysicalBC> pressure and force loads at t_n with F_n (Vaango's applyExternalLoads).
   apply_loads(t);
+  //    Rotating frame: f_ext,p += m_p (-omega x (omega x r) - 2 omega x v) at x_n, v_n (Alg. 3, mpm/loads/RotatingFrame.h).
+  if (setup_.rotating_frame) apply_rotating_frame();
+  //    <PhysicalBC><MPM><velocity>: v_p = v(t_n) on the flagged particles (mpm/loads/VelocityBcPhase.cpp).
+  const bool velocity_surfaces = !setup_.loads.velocity.empty();
+  if (velocity_surfaces) prescribe_surface_velocities(t);
   // 1-3. Body force (gravity) and external loads enter P2G: m_g, V_g, v_g, f_ext,g (Alg. 5, eq. 1.69).
   for (MpmMaterial& m : mats) interpolate_to_grid(m, step, "interpolate particles to grid");
+  if (velocity_surfaces) find_surface_velocity_nodes(t);  // v_g = v(t_n) at the nodes they reach
   // MPMICE steps 1-6: node -> cell, equilibration, face velocities, pressure (mpmice/).
   if (coupling_) coupling_->after_interpolate_to_grid(t, dt, step);
   // 4. Contact on the interpolated velocities v_g.
@@ -341,6 +347,7 @@ void MpmComponent::advance(double t, double dt, int step) {
     for (std::size_t i = 0; i < mats.size(); ++i) {
       MpmMaterial& m = mats[i];
       m.bcs.apply(m.grid, m.grid.velocity_star);
+      if (velocity_surfaces) impose_surface_velocities(i, t + dt, m.grid.velocity_star);
       if (contact) {
         for (std::size_t g = 0; g < m.grid.count(); ++g)
           m.grid.acceleration[g] = (m.grid.velocity_star[g] - p2g_velocity_[i][g]) / dt;
@@ -377,6 +384,7 @@ void MpmComponent::advance(double t, double dt, int step) {
         }
         if (!setup_.flags.axisymmetric) fold_symmetry_velocity(m.bcs, m.grid, musl_velocity_[i]);
         m.bcs.apply(m.grid, musl_velocity_[i]);
+        if (velocity_surfaces) impose_surface_velocities(i, t + dt, musl_velocity_[i]);
         std::swap(m.grid.velocity_star, musl_velocity_[i]);  // l_p and contact read g.velocity_star
       }
       if (contact) exchange_momentum(ContactStage::Integrated, t, dt);
@@ -409,6 +417,8 @@ void MpmComponent::advance(double t, double dt, int step) {
     stable_dt_ = std::min(stable_dt_, material_stable_timestep(m));
   }
   stable_dt_ = std::min(stable_dt_, thermal_stable_timestep());
+  //     <PhysicalBC><MPM><heat_flux>: q(t_n) A / N per flagged particle into its heating rate (mpm/loads/BodyForcePhase.cpp).
+  if (!setup_.loads.heat_flux.empty()) add_heat_flux_heating(t, step);
   // 13. G2P, FLIP: v_p += dt sum a_g S, x_p += dt sum v*_g S (Alg. 14, eq. 1.76).
   {
     PhaseTimers::Scope timer(phase_timers(), "MPM: interpolate to particles and update");
@@ -419,6 +429,7 @@ void MpmComponent::advance(double t, double dt, int step) {
       grid_to_particles(m.stencils, m.grid, dt, p);
       wrap_periodic_positions(setup_.grid, p);  // re-enter through the opposite periodic face
       update_temperatures(m, dt);  // T += dt (sum rate_g S + model heating)
+      if (setup_.flags.test_for_negative_temperatures) check_temperatures(m, step);  // T < 0: exit 4
       // The lowest particle with a non-finite velocity or outside the grid (threads), then its message.
       const NodeGrid& grid = m.grid;
       auto fine = [&](std::size_t i) {

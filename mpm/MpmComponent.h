@@ -23,6 +23,7 @@
 #include "mpm/Particles.h"
 #include "mpm/contact/ContactModel.h"
 #include "mpm/loads/ParticleLoads.h"
+#include "mpm/loads/RotatingFrame.h"
 #include "mpm/mms/ManufacturedSolution.h"
 #include "mpm/shape/Interpolator.h"
 #include "mpm/thermal/HeatConduction.h"
@@ -60,6 +61,7 @@ struct MpmSetup {
   std::vector<MpmMaterial> materials;
   ContactModelP contact;  // nullptr: null contact (materials do not interact)
   ParticleLoads loads;    // <PhysicalBC><MPM> pressure and force loads (mpm/loads/)
+  std::optional<RotatingFrame> rotating_frame;  // <MPM><rotating_coordinate_system>, or none
   std::optional<PrescribedDeformation> prescribed;  // <use_prescribed_deformation>, or none
   bool accumulate_strain_energy = false;  // the deck saves AccStrainEnergy (mpm/StrainWork.h)
   bool thermal_contact = false;
@@ -105,6 +107,13 @@ class MpmComponent final : public Component {
   void exchange_momentum(ContactStage stage, double t, double dt);
   void boundary_forces();
   void apply_loads(double t);
+  void apply_rotating_frame();  // mpm/loads/BodyForcePhase.cpp
+  // <PhysicalBC><MPM><velocity> (mpm/loads/VelocityBcPhase.cpp).
+  void prescribe_surface_velocities(double t);
+  void find_surface_velocity_nodes(double t);
+  void impose_surface_velocities(std::size_t material, double t, std::vector<Vec3>& velocity) const;
+  // <PhysicalBC><MPM><heat_flux>: q A / N per flagged particle into its heating rate (same file).
+  void add_heat_flux_heating(double t, int step);
   void update_stress(MpmMaterial& m, int step, double dt);
   void artificial_viscosity(MpmMaterial& m) const;
   // Thermal phases (mpm/thermal/ThermalPhase.cpp).
@@ -114,6 +123,7 @@ class MpmComponent final : public Component {
   void update_temperatures(MpmMaterial& m, double dt);
   void erode(MpmMaterial& m);  // mpm/ErosionPhase.cpp
   void delete_particles(MpmMaterial& m, const std::vector<Vec3>& v_old, int step);  // mpm/ParticleDeletionPhase.cpp
+  void check_temperatures(const MpmMaterial& m, int step) const;  // <test_for_neg_temps_mpm> (same file)
   [[noreturn]] void fail_particle(const MpmMaterial& m, std::size_t i, int step, const std::string& phase,
                                   const std::string& what) const;
   MpmSetup setup_;
@@ -140,6 +150,10 @@ class MpmComponent final : public Component {
   // Node aliases of the periodic directions (inactive without <periodic>).
   PeriodicNodes periodic_;
   MpmCoupling* coupling_ = nullptr;  // not owned
+  // Velocity surfaces of the step, per material: the surface index of each
+  // particle (-1: none) and the (node, surface) pairs the flagged particles reach.
+  std::vector<std::vector<int>> surface_of_particle_;
+  std::vector<std::vector<std::pair<std::size_t, int>>> surface_nodes_;
 };
 
 // Reads the MPM parts of the deck (<MPM>, <PhysicalConstants>, <MaterialProperties><MPM>,

@@ -20,6 +20,14 @@ void read_loads_and_drivers(const Deck& deck, MpmSetup& setup) {
   if (!setup.loads.empty() && ((setup.grid.periodic.array() != 0).any() || setup.flags.axisymmetric))
     root.require_child("PhysicalBC").missing_feature(std::string("<PhysicalBC> loads with ") +
                                                      (setup.flags.axisymmetric ? "<axisymmetric>" : "<periodic>"));
+  // <rotating_coordinate_system> (mpm/loads/RotatingFrame.h): Cartesian, non-periodic, no MMS.
+  if (const DeckNode* mpm_flags = root.child("MPM"))
+    if (const DeckNode* rot = mpm_flags->child("rotating_coordinate_system")) {
+      setup.rotating_frame = parse_rotating_frame(*rot);
+      if (setup.flags.axisymmetric) rot->missing_feature("a rotating coordinate system with <axisymmetric>");
+      if ((setup.grid.periodic.array() != 0).any()) rot->missing_feature("a rotating coordinate system with <periodic>");
+      if (!setup.flags.mms.empty()) rot->missing_feature("a rotating coordinate system with <run_MMS_problem>");
+    }
   if (setup.flags.use_prescribed_deformation) {
     const DeckNode& mpm_flags = root.require_child("MPM");
     if (setup.flags.axisymmetric)

@@ -17,7 +17,7 @@ namespace {
 const char* const kNoEffect[] = {
     "withColor", "computeScaleFactor", "computeNodalHeatFlux",
     "DoTransientImplicitHeatConduction", "DoThermalExpansion",
-    "do_contact_friction_heating", "interpolateParticleTempToGridEveryStep", "testForNegTemps_mpm",
+    "do_contact_friction_heating", "interpolateParticleTempToGridEveryStep",
     "min_grid_level", "max_grid_level",
     "CanAddMPMMaterial",
 };
@@ -135,6 +135,10 @@ MpmFlags parse_mpm_flags(const DeckNode* mpm) {
     if (c.name == "artificial_viscosity_heating") { flags.artificial_viscosity_heating = c.as_bool(); continue; }
     if (c.name == "use_load_curves") { flags.use_load_curves = c.as_bool(); continue; }
     if (c.name == "axisymmetric") { flags.axisymmetric = c.as_bool(); continue; }
+    if (c.name == "test_for_neg_temps_mpm" || c.name == "testForNegTemps_mpm") {
+      flags.test_for_negative_temperatures = c.as_bool();
+      continue;
+    }
     if (c.name == "use_prescribed_deformation" || c.name == "UsePrescribedDeformation") {
       flags.use_prescribed_deformation = c.as_bool();
       continue;
@@ -142,6 +146,8 @@ MpmFlags parse_mpm_flags(const DeckNode* mpm) {
     // The file is read in make_mpm_component; the exact increment is always
     // used (mpm/PrescribedDeformation.h), so <exact_deformation> has no effect.
     if (c.name == "prescribed_deformation_file") continue;
+    // Read in make_mpm_component (mpm/loads/RotatingFrame.h).
+    if (c.name == "rotating_coordinate_system") continue;
     if (c.name == "exact_deformation" || c.name == "exactDeformation") { c.as_bool(); continue; }
     if (c.name == "do_explicit_heat_conduction" || c.name == "DoExplicitHeatConduction") {
       flags.explicit_heat_conduction = c.as_bool();

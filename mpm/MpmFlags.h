@@ -64,6 +64,11 @@ struct MpmFlags {
   // <axisymmetric>: x = r, y = z, one hoop cell (mpm/Axisymmetric.h); linear interpolation only.
   bool axisymmetric = false;
   int deformation_gradient_terms = 1;
+  // <test_for_neg_temps_mpm> (also spelled <testForNegTemps_mpm>; Vaango's
+  // default true): a particle temperature below 0 K after G2P stops the run
+  // (NumericalFailure, exit 4, naming particle, material and step). With
+  // false, such a particle is deleted instead (mpm/ParticleDeletion.h).
+  bool test_for_negative_temperatures = true;
 };
 
 // Reads <MPM> (may be null: all defaults).

@@ -28,4 +28,19 @@ void MpmComponent::delete_particles(MpmMaterial& m, const std::vector<Vec3>& v_o
   remove_particles(m.particles, keep, {&m.plastic_work, &m.heating}, {&m.L, &m.F_old});
 }
 
+// <test_for_neg_temps_mpm> (default true): the lowest-index particle whose
+// temperature is below 0 K (or not a number) after the step's temperature
+// update stops the run with a NumericalFailure naming it, its material and
+// the step. Without the check the deletion above removes such particles.
+void MpmComponent::check_temperatures(const MpmMaterial& m, int step) const {
+  const std::vector<double>& T = m.particles.temperature;
+  for (std::size_t i = 0; i < T.size(); ++i)
+    if (!(T[i] >= 0.0)) {
+      std::ostringstream s;
+      s.precision(17);
+      s << "negative temperature T = " << T[i] << " K (<test_for_neg_temps_mpm>; false deletes the particle instead)";
+      fail_particle(m, i, step, "update particle temperatures", s.str());
+    }
+}
+
 }  // namespace tephra

@@ -113,6 +113,32 @@ LoadCurve<double> parse_scalar_load_curve(const DeckNode& parent) {
   return c;
 }
 
+LoadCurve<Vec3> parse_vector_load_curve(const DeckNode& parent) {
+  const DeckNode& lc = parent.require_child("load_curve");
+  require_known(lc, {"id", "time_point"});
+  LoadCurve<Vec3> c;
+  c.id = lc.get_int("id");
+  for (const DeckNode* tp : lc.children_named("time_point")) {
+    require_known(*tp, {"time", "load"});
+    const double t = tp->get_double("time");
+    if (!c.time.empty() && !(t > c.time.back()))
+      tp->require_child("time").fail("load curve times must increase strictly");
+    c.time.push_back(t);
+    c.load.push_back(tp->get_vec3("load"));
+  }
+  if (c.time.empty()) lc.fail("a <load_curve> needs at least one <time_point>");
+  return c;
+}
+
+std::vector<int> velocity_surface_of_particles(const ParticleLoads& loads, const Vec3& h, const Particles& p) {
+  std::vector<int> surface(p.size(), -1);
+  for (std::size_t k = 0; k < loads.velocity.size(); ++k)
+    for (std::size_t i = 0; i < p.size(); ++i)
+      if (loads.velocity[k].where.on_surface(p.x[i] - p.displacement[i], particle_spacing(p.psize[i], h)))
+        surface[i] = int(k);
+  return surface;
+}
+
 bool PressureSurface::on_surface(const Vec3& X, const Vec3& dxpp) const {
   switch (kind) {
     case Kind::Box:
@@ -187,7 +213,30 @@ ParticleLoads parse_particle_loads(const DeckNode* physical_bc, bool use_load_cu
         r.force_density = bc.get_vec3("force_density");
         if (((r.upper - r.lower).array() < 0.0).any()) bc.fail("force region: lower must be <= upper");
         loads.force.push_back(r);
-      } else if (bc.name == "velocity" || bc.name == "moment" || bc.name == "heat_flux" ||
+      } else if (bc.name == "velocity") {
+        require_known(bc, {"geom_object", "load_curve", "res", "load_curve_scaling_function"});
+        VelocitySurface v;
+        parse_surface(bc.require_child("geom_object"), v.where);
+        v.curve = parse_vector_load_curve(bc);
+        if (const DeckNode* f = bc.child("load_curve_scaling_function")) {
+          const auto x = parse_double(f->text);
+          if (!x || *x != 1.0)
+            f->missing_feature("load_curve_scaling_function '" + f->text + "' (only the constant 1 is implemented)");
+        }
+        if (use_load_curves) loads.velocity.push_back(std::move(v));
+        else
+          log::warning(bc.file + ":" + std::to_string(bc.line) +
+                       ": <velocity> load ignored: Vaango applies load curves only with <MPM><use_load_curves>true");
+      } else if (bc.name == "heat_flux") {
+        require_known(bc, {"geom_object", "load_curve"});
+        PressureSurface s;
+        parse_surface(bc.require_child("geom_object"), s);
+        s.curve = parse_scalar_load_curve(bc);
+        if (use_load_curves) loads.heat_flux.push_back(std::move(s));
+        else
+          log::warning(bc.file + ":" + std::to_string(bc.line) +
+                       ": <heat_flux> load ignored: Vaango applies load curves only with <MPM><use_load_curves>true");
+      } else if (bc.name == "moment" ||
                  bc.name == "arches_heat_flux") {
         bc.missing_feature("MPM physical boundary condition <" + bc.name + ">");
       } else {
@@ -197,6 +246,19 @@ ParticleLoads parse_particle_loads(const DeckNode* physical_bc, bool use_load_cu
     }
   }
   return loads;
+}
+
+std::vector<long> particles_per_surface(const std::vector<PressureSurface>& surfaces, const Vec3& h,
+                                        const std::vector<Particles*>& materials) {
+  std::vector<long> n(surfaces.size(), 0);
+  for (const Particles* p : materials)
+    for (std::size_t i = 0; i < p->size(); ++i) {
+      const Vec3 X = p->x[i] - p->displacement[i];
+      const Vec3 dxpp = particle_spacing(p->psize[i], h);
+      for (std::size_t k = 0; k < surfaces.size(); ++k)
+        if (surfaces[k].on_surface(X, dxpp)) ++n[k];
+    }
+  return n;
 }
 
 std::vector<long> particles_per_pressure_surface(const ParticleLoads& loads, const Vec3& h,

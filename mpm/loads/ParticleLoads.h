@@ -63,13 +63,46 @@ struct ForceRegion {
   Vec3 force_density = Vec3::Zero();  // [N/kg]
 };
 
+// <velocity>: a prescribed velocity v(t) from a vector load curve on the
+// particles of a surface (Vaango's VelocityBC; its flags are those of a
+// pressure surface: reference position within the particle spacing of the
+// box, cylinder or sphere). Tephra imposes it on the grid (Vaango's
+// VelocityBC only supplies the value; the application is Tephra's own,
+// documented in docs/mpm-loads.md): at the start of step n the flagged
+// particles take v_p = v(t_n); every node their stencils reach (S_gp > 0)
+// takes v_g = v(t_n) after P2G and v*_g = v(t_{n+1}) with the grid boundary
+// conditions (Alg. 8), also in the velocity the gradient is taken from. FLIP
+// then gives the flagged particles v_p = v(t_{n+1}) and x_p += dt v(t_{n+1})
+// exactly: the surface moves as prescribed and drives the rest of the body
+// through the shared nodes, as a Dirichlet face does.
+struct VelocitySurface {
+  PressureSurface where;   // the surface (its area and pressure curve are unused)
+  LoadCurve<Vec3> curve;   // v(t) [m/s]
+};
+
 struct ParticleLoads {
   std::vector<PressureSurface> pressure;  // empty unless <use_load_curves>
   std::vector<ForceRegion> force;
-  bool empty() const { return pressure.empty() && force.empty(); }
+  std::vector<VelocitySurface> velocity;  // empty unless <use_load_curves>
+  // <heat_flux> (Vaango's HeatFluxBC): a heat flux q(t) [W/m^2] from a load
+  // curve into the particles of a surface (flags and area as a pressure
+  // surface); each of the N flagged particles (all materials) receives the
+  // heat rate Q_p = q(t_n) A / N [W], i.e. dT_p/dt += Q_p / (m_p c_v), so the
+  // thermal energy sum m c_v T grows by q A dt per step exactly. Positive q
+  // heats. Empty unless <use_load_curves>.
+  std::vector<PressureSurface> heat_flux;
+  bool empty() const { return pressure.empty() && force.empty() && velocity.empty() && heat_flux.empty(); }
 };
 
-// Reads <PhysicalBC> (may be null). <velocity>, <moment>, <heat_flux>,
+// For each particle of `p` (cell size h): the index in loads.velocity of the
+// velocity surface it lies on (the last one when several flag it), or -1.
+std::vector<int> velocity_surface_of_particles(const ParticleLoads& loads, const Vec3& h, const Particles& p);
+
+// Reads the <load_curve> of `parent` with vector loads ([vx, vy, vz]); as
+// parse_scalar_load_curve otherwise.
+LoadCurve<Vec3> parse_vector_load_curve(const DeckNode& parent);
+
+// Reads <PhysicalBC> (may be null). <moment>,
 // <arches_heat_flux>, axisymmetric cylinder surfaces and a load-curve scaling
 // function other than 1 are MissingFeature; bad values are DeckError.
 ParticleLoads parse_particle_loads(const DeckNode* physical_bc, bool use_load_curves);
@@ -78,6 +111,10 @@ ParticleLoads parse_particle_loads(const DeckNode* physical_bc, bool use_load_cu
 // zero, plus the force regions, plus the pressure surfaces.
 void apply_particle_loads(const ParticleLoads& loads, double t, const Vec3& h,
                           const std::vector<Particles*>& materials);
+
+// Particles on each surface of `surfaces`, summed over `materials`.
+std::vector<long> particles_per_surface(const std::vector<PressureSurface>& surfaces, const Vec3& h,
+                                        const std::vector<Particles*>& materials);
 
 // Particles on each pressure surface, summed over `materials` (Vaango's
 // materialPointsPerLoadCurve).

@@ -6,6 +6,8 @@
 
 #include <cmath>
 
+#include "core/base/Errors.h"
+#include "core/deck/DeckLoader.h"
 #include "core/geometry/Primitives.h"
 #include "models/solid/CompNeoHookean.h"
 #include "mpm/MpmComponent.h"
@@ -173,6 +175,55 @@ TEST(ParticleDeletion, ComponentReportsTheDeletedMass) {
   EXPECT_EQ(p.size(), n - 1);
   EXPECT_EQ(c.deleted_mass(), 1.0);
   EXPECT_EQ(c.reductions({"TotalMass"}).at("TotalMass")[0], 2.0 * double(n - 1));
+}
+
+
+// <test_for_neg_temps_mpm> (default true, mpm/MpmFlags.h): a particle at
+// T < 0 K after the step's temperature update stops the run with a
+// NumericalFailure (exit 4) naming the particle id, its material and the step;
+// with the check off the deletion rule removes it instead.
+TEST(ParticleDeletion, NegativeTemperatureStopsTheRunNamingParticleMaterialAndStep) {
+  MpmComponent c(free_block());
+  c.initialize();
+  Particles& p = c.materials()[0].particles;
+  c.advance(0.0, 1e-4, 1);  // all at 300 K: no failure
+  p.temperature[3] = -2.5;  // no conduction (k = 0): it stays negative through the step
+  const long long id = p.id[3];
+  try {
+    c.advance(1e-4, 1e-4, 2);
+    ADD_FAILURE() << "no NumericalFailure";
+  } catch (const NumericalFailure& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("MPM step 2"), std::string::npos) << what;
+    EXPECT_NE(what.find("material 0 particle id " + std::to_string(id)), std::string::npos) << what;
+    EXPECT_NE(what.find("negative temperature T = -2.5 K"), std::string::npos) << what;
+    EXPECT_EQ(e.code(), ExitCode::NumericalFailure);
+  }
+}
+
+TEST(ParticleDeletion, NegativeTemperatureIsDeletedWhenTheCheckIsOff) {
+  MpmSetup s = free_block();
+  s.flags.test_for_negative_temperatures = false;
+  MpmComponent c(std::move(s));
+  c.initialize();
+  Particles& p = c.materials()[0].particles;
+  const std::size_t n = p.size();
+  p.temperature[3] = -2.5;
+  EXPECT_NO_THROW(c.advance(0.0, 1e-4, 1));
+  EXPECT_EQ(p.size(), n - 1);
+  EXPECT_EQ(c.deleted_mass(), 2.0);
+}
+
+TEST(ParticleDeletion, NegativeTemperatureFlagSpellings) {
+  auto flags = [](const std::string& mpm) {
+    auto d = load_deck_from_string("<Uintah_specification><MPM>" + mpm + "</MPM></Uintah_specification>", "t.ups", ".");
+    return parse_mpm_flags(d->root.child("MPM")).test_for_negative_temperatures;
+  };
+  EXPECT_TRUE(flags(""));  // Vaango's default
+  EXPECT_FALSE(flags("<test_for_neg_temps_mpm>false</test_for_neg_temps_mpm>"));
+  EXPECT_FALSE(flags("<testForNegTemps_mpm>false</testForNegTemps_mpm>"));
+  EXPECT_TRUE(flags("<testForNegTemps_mpm>true</testForNegTemps_mpm>"));
+  EXPECT_THROW(flags("<test_for_neg_temps_mpm>maybe</test_for_neg_temps_mpm>"), DeckError);
 }
 
 }  // namespace

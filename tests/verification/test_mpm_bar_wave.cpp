@@ -91,25 +91,8 @@ TEST(MpmBarWave, WaveSpeedAndStressBehindTheFront) {
   EXPECT_NEAR(p2.mean_stress / sigma_exact, 1.0, 0.02);
 }
 
-// <use_load_curves>true with a <PhysicalBC><MPM><velocity> load (not
-// implemented; pressure loads are, tests/verification/test_mpm_pressure_bar.cpp)
-// exits 3.
-TEST(MpmBarWave, LoadCurveWithAPhysicalBcIsAMissingFeature) {
-  const std::string path = test::shared_dir() +
-                           "/decks/inputs/MPM/WavePropagationVerification/MPM1DVerificationTests/"
-                           "OneD_velocityBC_gimp_damped_uintah.ups";
-  std::ifstream in(path);
-  std::stringstream text;
-  text << in.rdbuf();
-  std::string deck_text = text.str();
-  const std::string close = "</Uintah_specification>";
-  deck_text.insert(deck_text.rfind(close),
-                   "<PhysicalBC><MPM><velocity><geom_object><box label=\"end\"><min>[-0.61,-1,-1]</min>"
-                   "<max>[-0.59,1,1]</max></box></geom_object><load_curve><id>1</id><time_point><time>0</time>"
-                   "<load>[1,0,0]</load></time_point></load_curve></velocity></MPM></PhysicalBC>\n");
-  auto deck = load_deck_from_string(deck_text, "bar_with_load.ups", ".");
-  EXPECT_THROW(make_mpm_component(*deck), MissingFeature);
-}
+// The same bar driven by a <PhysicalBC><MPM><velocity> load curve instead of
+// the Dirichlet face: tests/verification/test_mpm_velocity_load.cpp.
 
 }  // namespace
 }  // namespace tephra
