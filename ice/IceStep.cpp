@@ -13,24 +13,13 @@
 #include "ice/IceAdvection.h"
 #include "ice/IceBoundary.h"
 #include "ice/IceComponent.h"
+#include "ice/RowLoop.h"
 
 namespace tephra {
 
 namespace {
 
 IndexRange faces_of(const Patch& p, int d) { return {p.lo, p.hi + IntVec3::Unit(d)}; }
-
-// kernel(j, k) once per (j, k) row of r, the kernel looping over
-// i in [r.lo[0], r.hi[0]) itself (a row is contiguous in every cell field),
-// for kernels that hand whole rows to batched EOS calls. Rows are shared
-// among threads as for_each_cell (core/grid/Loop.h) shares its (k, j) pairs.
-template <class Kernel>
-void for_each_row(const IndexRange& r, Kernel&& kernel) {
-  const int k0 = r.lo[2], k1 = r.hi[2], j0 = r.lo[1], j1 = r.hi[1];
-#pragma omp parallel for collapse(2) schedule(static) if (r.size() >= kMinCellsPerParallelLoop)
-  for (int k = k0; k < k1; ++k)
-    for (int j = j0; j < j1; ++j) kernel(j, k);
-}
 
 }  // namespace
 
@@ -122,11 +111,19 @@ void IceComponent::compute_face_velocities(double dt, const CellScalars& press) 
         GridArray<double>& uf = f.vel_FC.at(d, pi);
         const IntVec3 e = IntVec3::Unit(d);
         const double gdt = setup_.gravity[d] * dt, inv_dx = 1.0 / g.dx[d];
-        for_each_cell(faces_of(g.patches[pi], d), [&](int i, int j, int k) {
-          const IntVec3 R(i, j, k), L = R - e;
-          const double term1 = (rho(L) * u(L)[d] + rho(R) * u(R)[d]) / (rho(L) + rho(R));
-          const double sp_vol_brack = 2.0 * v(L) * v(R) / (v(L) + v(R));
-          uf(R) = term1 - dt * sp_vol_brack * (p(R) - p(L)) * inv_dx + gdt;
+        const IndexRange fr = faces_of(g.patches[pi], d);
+        const int i0 = fr.lo[0], n = fr.hi[0] - i0;
+        for_each_row(fr, [&](int j, int k) {
+          const IntVec3 R(i0, j, k), L = R - e;
+          const double *rhoL = row_ptr(rho, L), *rhoR = row_ptr(rho, R), *vL = row_ptr(v, L), *vR = row_ptr(v, R);
+          const double *pL = row_ptr(p, L), *pR = row_ptr(p, R);
+          const Vec3 *uL = row_ptr(u, L), *uR = row_ptr(u, R);
+          double* out = row_ptr(uf, R);
+          for (int c = 0; c < n; ++c) {
+            const double term1 = (rhoL[c] * uL[c][d] + rhoR[c] * uR[c][d]) / (rhoL[c] + rhoR[c]);
+            const double sp_vol_brack = 2.0 * vL[c] * vR[c] / (vL[c] + vR[c]);
+            out[c] = term1 - dt * sp_vol_brack * (pR[c] - pL[c]) * inv_dx + gdt;
+          }
         });
       }
       for (int face = 0; face < 6; ++face) {
@@ -150,18 +147,33 @@ void IceComponent::add_exchange_to_face_velocities(double dt) {
         continue;
       }
       const IntVec3 e = IntVec3::Unit(d);
-      for_each_cell(faces_of(g.patches[pi], d), [&](int i, int j, int k) {
-        const IntVec3 R(i, j, k), L = R - e;
-        double theta[kMaxExchangeMaterials], sv[kMaxExchangeMaterials], u[kMaxExchangeMaterials];
+      const IndexRange fr = faces_of(g.patches[pi], d);
+      const int i0 = fr.lo[0], n = fr.hi[0] - i0;
+      for_each_row(fr, [&](int j, int k) {
+        const IntVec3 R(i0, j, k), L = R - e;
+        const double *thL[kMaxExchangeMaterials], *thR[kMaxExchangeMaterials], *svL[kMaxExchangeMaterials],
+            *svR[kMaxExchangeMaterials], *uf[kMaxExchangeMaterials];
+        double* out[kMaxExchangeMaterials];
         for (std::size_t m = 0; m < nm; ++m) {
           const IceMaterialFields& f = mats_[m];
-          theta[m] = 0.5 * (f.vol_frac_CC[pi](L) + f.vol_frac_CC[pi](R));
-          const double vL = f.sp_vol_CC[pi](L), vR = f.sp_vol_CC[pi](R);
-          sv[m] = 2.0 * vL * vR / (vL + vR);
-          u[m] = f.vel_FC.at(d, pi)(R);
+          thL[m] = row_ptr(f.vol_frac_CC[pi], L);
+          thR[m] = row_ptr(f.vol_frac_CC[pi], R);
+          svL[m] = row_ptr(f.sp_vol_CC[pi], L);
+          svR[m] = row_ptr(f.sp_vol_CC[pi], R);
+          uf[m] = row_ptr(f.vel_FC.at(d, pi), R);
+          out[m] = row_ptr(mats_[m].vel_FCME.at(d, pi), R);
         }
-        solve_exchange(dt, {theta, nm}, {sv, nm}, {}, setup_.K, {u, nm});
-        for (std::size_t m = 0; m < nm; ++m) mats_[m].vel_FCME.at(d, pi)(R) = u[m];
+        for (int c = 0; c < n; ++c) {
+          double theta[kMaxExchangeMaterials], sv[kMaxExchangeMaterials], u[kMaxExchangeMaterials];
+          for (std::size_t m = 0; m < nm; ++m) {
+            theta[m] = 0.5 * (thL[m][c] + thR[m][c]);
+            const double vL = svL[m][c], vR = svR[m][c];
+            sv[m] = 2.0 * vL * vR / (vL + vR);
+            u[m] = uf[m][c];
+          }
+          solve_exchange(dt, {theta, nm}, {sv, nm}, {}, setup_.K, {u, nm});
+          for (std::size_t m = 0; m < nm; ++m) out[m][c] = u[m];
+        }
       });
     }
   if (nm == 1) return;
@@ -184,12 +196,23 @@ void IceComponent::compute_delP_and_pressure(double dt) {
   const Grid& g = setup_.grid;
   sum_volume_flux_and_kappa(dt);
   for (std::size_t pi = 0; pi < g.patches.size(); ++pi) {
-    for_each_cell(g.patches[pi].cells(), [&](int i, int j, int k) {
-      delP_Dilatate_[pi](i, j, k) /= sum_kappa_[pi](i, j, k);
-      press_CC_[pi](i, j, k) = press_equil_CC_[pi](i, j, k) + delP_Dilatate_[pi](i, j, k);
+    const IndexRange cells = g.patches[pi].cells();
+    const int i0 = cells.lo[0], n = cells.hi[0] - i0;
+    for_each_row(cells, [&](int j, int k) {
+      double* delP = row_ptr(delP_Dilatate_[pi], i0, j, k);
+      double* press = row_ptr(press_CC_[pi], i0, j, k);
+      const double* kappa = row_ptr(sum_kappa_[pi], i0, j, k);
+      const double* p_eq = row_ptr(press_equil_CC_[pi], i0, j, k);
+      for (int c = 0; c < n; ++c) {
+        delP[c] /= kappa[c];
+        press[c] = p_eq[c] + delP[c];
+      }
       if (model_src_) {  // + delP_MassX (IceModelStep.cpp), clamped at 1e-12 Pa as Uintah
-        delP_MassX_[pi](i, j, k) /= sum_kappa_[pi](i, j, k);
-        press_CC_[pi](i, j, k) = std::max(1e-12, press_CC_[pi](i, j, k) + delP_MassX_[pi](i, j, k));
+        double* delP_MassX = row_ptr(delP_MassX_[pi], i0, j, k);
+        for (int c = 0; c < n; ++c) {
+          delP_MassX[c] /= kappa[c];
+          press[c] = std::max(1e-12, press[c] + delP_MassX[c]);
+        }
       }
     });
     for (int face = 0; face < 6; ++face)
@@ -205,27 +228,68 @@ void IceComponent::sum_volume_flux_and_kappa(double dt) {
   const Grid& g = setup_.grid;
   delP_Dilatate_.fill(0.0);
   sum_kappa_.fill(0.0);
+  // One ICE material without source models: the equilibration set theta = 1
+  // in every cell, so the limited slopes of theta are 0 and every slab value
+  // is 1 + 0 = 1 exactly; the flux is phi itself (the bits density_fluxes gives).
+  const bool unit_theta = mats_.size() == 1 && !model_src_ && !setup_.materials[0].lagrangian;
   for (std::size_t m = 0; m < mats_.size(); ++m) {
     IceMaterialFields& f = mats_[m];
-    density_fluxes(g, setup_.advection, f.vol_frac_CC, f.vel_FCME, dt, flux_);
-    flux_divergence(g, flux_, dq_);
-    for (std::size_t pi = 0; pi < g.patches.size(); ++pi)
-      for_each_cell(g.patches[pi].cells(), [&](int i, int j, int k) {
-        const double c = f.speedSound_CC[pi](i, j, k);
-        sum_kappa_[pi](i, j, k) += f.vol_frac_CC[pi](i, j, k) * f.sp_vol_CC[pi](i, j, k) / (c * c);
-        delP_Dilatate_[pi](i, j, k) += dq_[pi](i, j, k);
+    if (unit_theta) {
+      for (std::size_t pi = 0; pi < g.patches.size(); ++pi)
+        for (int d = 0; d < 3; ++d) {
+          const IndexRange fr = faces_of(g.patches[pi], d);
+          const int i0 = fr.lo[0], n = fr.hi[0] - i0;
+          const double r = dt / g.dx[d];
+          for_each_row(fr, [&](int j, int k) {
+            const double* u = row_ptr(f.vel_FCME.at(d, pi), i0, j, k);
+            double* F = row_ptr(flux_.at(d, pi), i0, j, k);
+            for (int c = 0; c < n; ++c) {
+              const double phi = u[c] * r;
+              F[c] = phi == 0.0 ? 0.0 : phi;
+            }
+          });
+        }
+    } else {
+      density_fluxes(g, setup_.advection, f.vol_frac_CC, f.vel_FCME, dt, flux_);
+    }
+    // delP += net inflow (flux_divergence), sum_kappa += theta v / c^2.
+    for (std::size_t pi = 0; pi < g.patches.size(); ++pi) {
+      const IndexRange cells = g.patches[pi].cells();
+      const int i0 = cells.lo[0], n = cells.hi[0] - i0;
+      for_each_row(cells, [&](int j, int k) {
+        const double* fx = row_ptr(flux_.at(0, pi), i0, j, k);
+        const double *fy0 = row_ptr(flux_.at(1, pi), i0, j, k), *fy1 = row_ptr(flux_.at(1, pi), i0, j + 1, k);
+        const double *fz0 = row_ptr(flux_.at(2, pi), i0, j, k), *fz1 = row_ptr(flux_.at(2, pi), i0, j, k + 1);
+        const double* ss = row_ptr(f.speedSound_CC[pi], i0, j, k);
+        const double* theta = row_ptr(f.vol_frac_CC[pi], i0, j, k);
+        const double* v = row_ptr(f.sp_vol_CC[pi], i0, j, k);
+        double* kappa = row_ptr(sum_kappa_[pi], i0, j, k);
+        double* delP = row_ptr(delP_Dilatate_[pi], i0, j, k);
+        for (int c = 0; c < n; ++c) {
+          const double dq = (fx[c] - fx[c + 1]) + (fy0[c] - fy1[c]) + (fz0[c] - fz1[c]);
+          const double cs = ss[c];
+          kappa[c] += theta[c] * v[c] / (cs * cs);
+          delP[c] += dq;
+        }
       });
+    }
   }
 }
 
 // Step 5 (eq. 26.4): p* = (p_L rho_R + p_R rho_L)/(rho_L + rho_R), rho = sum_m rho_CC_m.
 void IceComponent::compute_face_pressure() {
   const Grid& g = setup_.grid;
+  const std::size_t nm = mats_.size();
   for (std::size_t pi = 0; pi < g.patches.size(); ++pi) {
-    for_each_cell(g.patches[pi].cells_with_extra(), [&](int i, int j, int k) {
-      double s = 0;
-      for (const IceMaterialFields& f : mats_) s += f.rho_CC[pi](i, j, k);
-      sum_rho_CC_[pi](i, j, k) = s;
+    const IndexRange box = g.patches[pi].cells_with_extra();
+    const int i0 = box.lo[0], n = box.hi[0] - i0;
+    for_each_row(box, [&](int j, int k) {
+      double* sum = row_ptr(sum_rho_CC_[pi], i0, j, k);
+      for (int c = 0; c < n; ++c) sum[c] = 0;
+      for (std::size_t m = 0; m < nm; ++m) {
+        const double* rho = row_ptr(mats_[m].rho_CC[pi], i0, j, k);
+        for (int c = 0; c < n; ++c) sum[c] += rho[c];
+      }
     });
   }
   halo_->exchange(sum_rho_CC_);
@@ -235,9 +299,13 @@ void IceComponent::compute_face_pressure() {
     for (int d = 0; d < 3; ++d) {
       GridArray<double>& pf = press_FC_.at(d, pi);
       const IntVec3 e = IntVec3::Unit(d);
-      for_each_cell(faces_of(g.patches[pi], d), [&](int i, int j, int k) {
-        const IntVec3 R(i, j, k), L = R - e;
-        pf(R) = (p(L) * rho(R) + p(R) * rho(L)) / (rho(L) + rho(R));
+      const IndexRange fr = faces_of(g.patches[pi], d);
+      const int i0 = fr.lo[0], n = fr.hi[0] - i0;
+      for_each_row(fr, [&](int j, int k) {
+        const IntVec3 R(i0, j, k), L = R - e;
+        const double *pL = row_ptr(p, L), *pR = row_ptr(p, R), *rL = row_ptr(rho, L), *rR = row_ptr(rho, R);
+        double* out = row_ptr(pf, R);
+        for (int c = 0; c < n; ++c) out[c] = (pL[c] * rR[c] + pR[c] * rL[c]) / (rL[c] + rR[c]);
       });
     }
   }
