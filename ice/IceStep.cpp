@@ -328,6 +328,8 @@ void IceComponent::lagrangian_values_and_exchange(double dt) {
   if (setup_.conserve_total_energy && mats_.size() == 1) face_pressure_work(dt);  // IceEnergy.cpp
   for (std::size_t pi = 0; pi < g.patches.size(); ++pi) {
     const Patch& patch = g.patches[pi];
+    const IndexRange with_extra = patch.cells_with_extra(), cells = patch.cells();
+    const int ie = with_extra.lo[0], ne = with_extra.hi[0] - ie, i0 = cells.lo[0], n = cells.hi[0] - i0;
     // Momentum and energy sources, Lagrangian values.
     for (std::size_t m = 0; m < nm; ++m) {
       IceMaterialFields& f = mats_[m];
@@ -336,70 +338,108 @@ void IceComponent::lagrangian_values_and_exchange(double dt) {
       const IceSpecificHeat* cv_model = setup_.materials[m].cv_model.get();
       const Vec3 gravity = setup_.materials[m].lagrangian ? Vec3::Zero() : setup_.gravity;
       const double cv_const = setup_.materials[m].cv;
-      for_each_cell(patch.cells_with_extra(), [&](int i, int j, int k) {
-        mass_L_[m][pi](i, j, k) = f.rho_CC[pi](i, j, k) * V;
-        cv_CC_[m][pi](i, j, k) = cv_model ? cv_model->cv(f.temp_CC[pi](i, j, k)) : cv_const;
+      for_each_row(with_extra, [&](int j, int k) {
+        const double* rho = row_ptr(f.rho_CC[pi], ie, j, k);
+        const double* temp = row_ptr(f.temp_CC[pi], ie, j, k);
+        double* mass = row_ptr(mass_L_[m][pi], ie, j, k);
+        double* cv = row_ptr(cv_CC_[m][pi], ie, j, k);
+        for (int c = 0; c < ne; ++c) mass[c] = rho[c] * V;
+        if (cv_model)
+          for (int c = 0; c < ne; ++c) cv[c] = cv_model->cv(temp[c]);
+        else
+          for (int c = 0; c < ne; ++c) cv[c] = cv_const;
       });
       compute_diffusion_sources(m, pi);
       const IceModelSources* ms = model_src_.get();
       const double min_mass = setup_.materials[m].tiny_rho * setup_.materials[m].sources[0].density * V;
-      for_each_cell(patch.cells(), [&](int i, int j, int k) {
-        const IntVec3 c(i, j, k);
-        const double mass = mass_L_[m][pi](c);
-        const double theta = f.vol_frac_CC[pi](c);
-        Vec3 grad_p;
-        for (int d = 0; d < 3; ++d) {
-          const GridArray<double>& pf = press_FC_.at(d, pi);
-          grad_p[d] = (pf(IntVec3(c + IntVec3::Unit(d))) - pf(c)) / g.dx[d];
+      const double dx[3] = {g.dx[0], g.dx[1], g.dx[2]};
+      for_each_row(cells, [&](int j, int k) {
+        const double* pfx = row_ptr(press_FC_.at(0, pi), i0, j, k);
+        const double *pfy0 = row_ptr(press_FC_.at(1, pi), i0, j, k), *pfy1 = row_ptr(press_FC_.at(1, pi), i0, j + 1, k);
+        const double *pfz0 = row_ptr(press_FC_.at(2, pi), i0, j, k), *pfz1 = row_ptr(press_FC_.at(2, pi), i0, j, k + 1);
+        double* mass_row = row_ptr(mass_L_[m][pi], i0, j, k);
+        const double* vol_frac = row_ptr(f.vol_frac_CC[pi], i0, j, k);
+        const double* speed = row_ptr(f.speedSound_CC[pi], i0, j, k);
+        const double* sp_vol = row_ptr(f.sp_vol_CC[pi], i0, j, k);
+        const double* cv_row = row_ptr(cv_CC_[m][pi], i0, j, k);
+        const double* temp = row_ptr(f.temp_CC[pi], i0, j, k);
+        const double* press = row_ptr(press_CC_[pi], i0, j, k);
+        const double* delP = row_ptr(delP_Dilatate_[pi], i0, j, k);
+        const double* heat = row_ptr(heat_[pi], i0, j, k);
+        const Vec3* visc = row_ptr(visc_force_[pi], i0, j, k);
+        const Vec3* vel = row_ptr(f.vel_CC[pi], i0, j, k);
+        Vec3* mom_source = row_ptr(f.mom_source_CC[pi], i0, j, k);
+        Vec3* mom_L_row = row_ptr(f.mom_L_CC[pi], i0, j, k);
+        double* int_eng_L = row_ptr(f.int_eng_L_CC[pi], i0, j, k);
+        Vec3* vel_L = row_ptr(vel_L_[m][pi], i0, j, k);
+        double* temp_L = row_ptr(temp_L_[m][pi], i0, j, k);
+        for (int c = 0; c < n; ++c) {
+          const double mass = mass_row[c];
+          const double theta = vol_frac[c];
+          Vec3 grad_p;
+          grad_p[0] = (pfx[c + 1] - pfx[c]) / dx[0];
+          grad_p[1] = (pfy1[c] - pfy0[c]) / dx[1];
+          grad_p[2] = (pfz1[c] - pfz0[c]) / dx[2];
+          // Viscous force and conduction (Diffusion.h): dt V div(theta tau), dt V div(theta k grad T).
+          // A lagrangian (MPM) material gets gravity on the MPM grid instead.
+          const Vec3 source = dt * (-V * theta * grad_p + mass * gravity + V * visc[c]);
+          mom_source[c] = source;
+          Vec3 mom_L = mass * vel[c] + source;
+          const double ss = speed[c];
+          const double kappa = sp_vol[c] / (ss * ss);
+          const double cv = cv_row[c];
+          double eint_L = mass * cv * temp[c] + V * theta * kappa * press[c] * delP[c] + dt * V * heat[c];
+          double mass_L = mass;
+          if (ms) {
+            // Model sources (Uintah computeLagrangianValues): M_L = max(M + S_M, tiny_rho V),
+            // (Mu)_L += S_mom, (Me)_L = max((Me)_L + S_E, M_min cv T).
+            const IntVec3 cell(i0 + c, j, k);
+            mass_L = std::max(mass + ms->mass[m][pi](cell), min_mass);
+            mom_L += ms->momentum[m][pi](cell);
+            eint_L = std::max(eint_L + ms->energy[m][pi](cell), min_mass * cv * temp[c]);
+            mass_row[c] = mass_L;
+          }
+          mom_L_row[c] = mom_L;
+          int_eng_L[c] = eint_L;
+          vel_L[c] = mom_L / mass_L;
+          temp_L[c] = eint_L / (mass_L * cv);
         }
-        // Viscous force and conduction (Diffusion.h): dt V div(theta tau), dt V div(theta k grad T).
-        // A lagrangian (MPM) material gets gravity on the MPM grid instead.
-        const Vec3 source = dt * (-V * theta * grad_p + mass * gravity + V * visc_force_[pi](c));
-        f.mom_source_CC[pi](c) = source;
-        Vec3 mom_L = mass * f.vel_CC[pi](c) + source;
-        const double ss = f.speedSound_CC[pi](c);
-        const double kappa = f.sp_vol_CC[pi](c) / (ss * ss);
-        const double cv = cv_CC_[m][pi](c);
-        double eint_L = mass * cv * f.temp_CC[pi](c) +
-                        V * theta * kappa * press_CC_[pi](c) * delP_Dilatate_[pi](c) + dt * V * heat_[pi](c);
-        double mass_L = mass;
-        if (ms) {
-          // Model sources (Uintah computeLagrangianValues): M_L = max(M + S_M, tiny_rho V),
-          // (Mu)_L += S_mom, (Me)_L = max((Me)_L + S_E, M_min cv T).
-          mass_L = std::max(mass + ms->mass[m][pi](c), min_mass);
-          mom_L += ms->momentum[m][pi](c);
-          eint_L = std::max(eint_L + ms->energy[m][pi](c), min_mass * cv * f.temp_CC[pi](c));
-          mass_L_[m][pi](c) = mass_L;
-        }
-        f.mom_L_CC[pi](c) = mom_L;
-        f.int_eng_L_CC[pi](c) = eint_L;
-        vel_L_[m][pi](c) = mom_L / mass_L;
-        temp_L_[m][pi](c) = eint_L / (mass_L * cv);
       });
       if (setup_.conserve_total_energy && mats_.size() == 1) add_face_pressure_work(m, pi, dt);  // IceEnergy.cpp
     }
     // Momentum and heat exchange, cell by cell.
     if (nm > 1) {
-      for_each_cell(patch.cells(), [&](int i, int j, int k) {
-        const IntVec3 c(i, j, k);
-        double inv_cv[kMaxExchangeMaterials];
-        for (std::size_t m = 0; m < nm; ++m) inv_cv[m] = 1.0 / cv_CC_[m][pi](c);
-        double theta[kMaxExchangeMaterials], sv[kMaxExchangeMaterials], ux[kMaxExchangeMaterials],
-            uy[kMaxExchangeMaterials], uz[kMaxExchangeMaterials], T[kMaxExchangeMaterials];
+      for_each_row(cells, [&](int j, int k) {
+        const double *cv_m[kMaxExchangeMaterials], *theta_m[kMaxExchangeMaterials], *sv_m[kMaxExchangeMaterials];
+        Vec3* vel_m[kMaxExchangeMaterials];
+        double* temp_m[kMaxExchangeMaterials];
         for (std::size_t m = 0; m < nm; ++m) {
-          theta[m] = mats_[m].vol_frac_CC[pi](c);
-          sv[m] = mats_[m].sp_vol_CC[pi](c);
-          const Vec3& u = vel_L_[m][pi](c);
-          ux[m] = u[0];
-          uy[m] = u[1];
-          uz[m] = u[2];
-          T[m] = temp_L_[m][pi](c);
+          cv_m[m] = row_ptr(cv_CC_[m][pi], i0, j, k);
+          theta_m[m] = row_ptr(mats_[m].vol_frac_CC[pi], i0, j, k);
+          sv_m[m] = row_ptr(mats_[m].sp_vol_CC[pi], i0, j, k);
+          vel_m[m] = row_ptr(vel_L_[m][pi], i0, j, k);
+          temp_m[m] = row_ptr(temp_L_[m][pi], i0, j, k);
         }
-        solve_exchange3(dt, {theta, nm}, {sv, nm}, setup_.K, {ux, nm}, {uy, nm}, {uz, nm});
-        solve_exchange(dt, {theta, nm}, {sv, nm}, {inv_cv, nm}, setup_.H, {T, nm});
-        for (std::size_t m = 0; m < nm; ++m) {
-          vel_L_[m][pi](c) = Vec3(ux[m], uy[m], uz[m]);
-          temp_L_[m][pi](c) = T[m];
+        for (int c = 0; c < n; ++c) {
+          double inv_cv[kMaxExchangeMaterials];
+          for (std::size_t m = 0; m < nm; ++m) inv_cv[m] = 1.0 / cv_m[m][c];
+          double theta[kMaxExchangeMaterials], sv[kMaxExchangeMaterials], ux[kMaxExchangeMaterials],
+              uy[kMaxExchangeMaterials], uz[kMaxExchangeMaterials], T[kMaxExchangeMaterials];
+          for (std::size_t m = 0; m < nm; ++m) {
+            theta[m] = theta_m[m][c];
+            sv[m] = sv_m[m][c];
+            const Vec3& u = vel_m[m][c];
+            ux[m] = u[0];
+            uy[m] = u[1];
+            uz[m] = u[2];
+            T[m] = temp_m[m][c];
+          }
+          solve_exchange3(dt, {theta, nm}, {sv, nm}, setup_.K, {ux, nm}, {uy, nm}, {uz, nm});
+          solve_exchange(dt, {theta, nm}, {sv, nm}, {inv_cv, nm}, setup_.H, {T, nm});
+          for (std::size_t m = 0; m < nm; ++m) {
+            vel_m[m][c] = Vec3(ux[m], uy[m], uz[m]);
+            temp_m[m][c] = T[m];
+          }
         }
       });
     }
@@ -419,42 +459,56 @@ void IceComponent::lagrangian_values_and_exchange(double dt) {
     if (nm == 1) {
       IceMaterialFields& f = mats_[0];
       const double tiny_v = setup_.materials[0].tiny_rho * setup_.materials[0].sources[0].density * V;
-      for_each_cell(patch.cells(), [&](int i, int j, int k) {
-        const IntVec3 c(i, j, k);
-        const double ss = f.speedSound_CC[pi](c);
-        const double theta_kappa = f.vol_frac_CC[pi](c) * f.sp_vol_CC[pi](c) / (ss * ss);
-        const double mass = f.rho_CC[pi](c) * V;
-        double sp_vol_L = mass * f.sp_vol_CC[pi](c) - V * theta_kappa * delP_Dilatate_[pi](c);
-        if (model_src_) sp_vol_L += model_src_->sp_vol[0][pi](c);
-        if (setup_.clamp_sp_vol) sp_vol_L = std::max(sp_vol_L, tiny_v * f.sp_vol_CC[pi](c));
-        spv_L_[0][pi](c) = sp_vol_L / mass_L_[0][pi](c);
+      const double* model_spv = nullptr;
+      for_each_row(cells, [&](int j, int k) {
+        const double* speed = row_ptr(f.speedSound_CC[pi], i0, j, k);
+        const double* vol_frac = row_ptr(f.vol_frac_CC[pi], i0, j, k);
+        const double* sp_vol = row_ptr(f.sp_vol_CC[pi], i0, j, k);
+        const double* rho = row_ptr(f.rho_CC[pi], i0, j, k);
+        const double* delP = row_ptr(delP_Dilatate_[pi], i0, j, k);
+        const double* mass_L = row_ptr(mass_L_[0][pi], i0, j, k);
+        const double* src = model_src_ ? row_ptr(model_src_->sp_vol[0][pi], i0, j, k) : model_spv;
+        double* spv_L = row_ptr(spv_L_[0][pi], i0, j, k);
+        for (int c = 0; c < n; ++c) {
+          const double ss = speed[c];
+          const double theta_kappa = vol_frac[c] * sp_vol[c] / (ss * ss);
+          const double mass = rho[c] * V;
+          double sp_vol_L = mass * sp_vol[c] - V * theta_kappa * delP[c];
+          if (src) sp_vol_L += src[c];
+          if (setup_.clamp_sp_vol) sp_vol_L = std::max(sp_vol_L, tiny_v * sp_vol[c]);
+          spv_L[c] = sp_vol_L / mass_L[c];
+        }
       });
-    } else for_each_cell(patch.cells(), [&](int i, int j, int k) {
-      const IntVec3 c(i, j, k);
-      const std::size_t off = press_CC_[pi].offset(i, j, k);
+    } else for_each_row(cells, [&](int j, int k) {
+      const std::size_t off0 = press_CC_[pi].offset(i0, j, k);
+      for (int c = 0; c < n; ++c) {
+      const IntVec3 cell(i0 + c, j, k);
+      const std::size_t off = off0 + c;
       double sum_theta_kappa = 0, sum_therm = 0;
       double theta_kappa[kMaxExchangeMaterials], therm[kMaxExchangeMaterials];
       for (std::size_t m = 0; m < nm; ++m) {
         const IceMaterialFields& f = mats_[m];
-        const double ss = f.speedSound_CC[pi](c);
-        theta_kappa[m] = f.vol_frac_CC[pi](c) * f.sp_vol_CC[pi](c) / (ss * ss);
-        const double tdot = (temp_L_[m][pi](c) - f.temp_CC[pi](c)) / dt;
-        therm[m] = f.vol_frac_CC[pi](c) * beta_tdot[m][off] * tdot;
+        const double ss = f.speedSound_CC[pi].data()[off];
+        theta_kappa[m] = f.vol_frac_CC[pi].data()[off] * f.sp_vol_CC[pi].data()[off] / (ss * ss);
+        const double tdot = (temp_L_[m][pi].data()[off] - f.temp_CC[pi].data()[off]) / dt;
+        therm[m] = f.vol_frac_CC[pi].data()[off] * beta_tdot[m][off] * tdot;
         sum_theta_kappa += theta_kappa[m];
         sum_therm += therm[m];
       }
       for (std::size_t m = 0; m < nm; ++m) {
         const IceMaterialFields& f = mats_[m];
-        const double mass = f.rho_CC[pi](c) * V;  // before the model mass source
+        const double mass = f.rho_CC[pi].data()[off] * V;  // before the model mass source
         const double f_theta = theta_kappa[m] / sum_theta_kappa;
-        double sp_vol_L = mass * f.sp_vol_CC[pi](c) - V * theta_kappa[m] * delP_Dilatate_[pi](c) +
+        const double sp_vol = f.sp_vol_CC[pi].data()[off];
+        double sp_vol_L = mass * sp_vol - V * theta_kappa[m] * delP_Dilatate_[pi].data()[off] +
                           dt * V * (therm[m] - f_theta * sum_therm);
-        if (model_src_) sp_vol_L += model_src_->sp_vol[m][pi](c);  // Uintah modelVol_src
+        if (model_src_) sp_vol_L += model_src_->sp_vol[m][pi](cell);  // Uintah modelVol_src
         // <ClampSpecificVolume> (Uintah): M v_L >= tiny_rho V v.
         if (setup_.clamp_sp_vol)
           sp_vol_L = std::max(sp_vol_L, setup_.materials[m].tiny_rho * setup_.materials[m].sources[0].density * V *
-                                            f.sp_vol_CC[pi](c));
-        spv_L_[m][pi](c) = sp_vol_L / mass_L_[m][pi](c);
+                                            sp_vol);
+        spv_L_[m][pi].data()[off] = sp_vol_L / mass_L_[m][pi].data()[off];
+      }
       }
     });
   }
@@ -492,10 +546,19 @@ void IceComponent::lagrangian_values_and_exchange(double dt) {
         }
       }
       if (setup_.lodi.enabled) lodi_lagrangian_bc(m, pi);
-      for_each_cell(p.cells_with_extra(), [&](int i, int j, int k) {
-        const double mass = mass_L_[m][pi](i, j, k);
-        f.mom_L_ME_CC[pi](i, j, k) = mass * vel_L_[m][pi](i, j, k);
-        f.eng_L_ME_CC[pi](i, j, k) = mass * cv_CC_[m][pi](i, j, k) * temp_L_[m][pi](i, j, k);
+      const IndexRange with_extra = p.cells_with_extra();
+      const int ie = with_extra.lo[0], ne = with_extra.hi[0] - ie;
+      for_each_row(with_extra, [&](int j, int k) {
+        const double* mass = row_ptr(mass_L_[m][pi], ie, j, k);
+        const Vec3* vel = row_ptr(vel_L_[m][pi], ie, j, k);
+        const double* cv = row_ptr(cv_CC_[m][pi], ie, j, k);
+        const double* temp = row_ptr(temp_L_[m][pi], ie, j, k);
+        Vec3* mom = row_ptr(f.mom_L_ME_CC[pi], ie, j, k);
+        double* eng = row_ptr(f.eng_L_ME_CC[pi], ie, j, k);
+        for (int c = 0; c < ne; ++c) {
+          mom[c] = mass[c] * vel[c];
+          eng[c] = mass[c] * cv[c] * temp[c];
+        }
       });
     }
     halo_->exchange(mass_L_[m]);
