@@ -623,27 +623,56 @@ void IceComponent::advect_and_advance(double dt, int step) {
     check_outflux(g, f.vel_FCME, dt, step);
     // Mass first; its face fluxes carry the specific quantities.
     density_fluxes(g, setup_.advection, mass_L_[m], f.vel_FCME, dt, flux_);
-    flux_divergence(g, flux_, dq_);
     specific_fluxes(g, setup_.advection, vel_L_[m], f.vel_FCME, flux_, dt, flux_v_);
-    flux_divergence(g, flux_v_, dqv_);
-    for (std::size_t pi = 0; pi < g.patches.size(); ++pi)
-      for_each_cell(g.patches[pi].cells(), [&](int i, int j, int k) {
-        const double mass_L = mass_L_[m][pi](i, j, k);
-        const double mass = mass_L + dq_[pi](i, j, k);
-        mass_new_[pi](i, j, k) = mass;
-        f.rho_CC[pi](i, j, k) = mass / V;
-        f.vel_CC[pi](i, j, k) = (mass_L * vel_L_[m][pi](i, j, k) + dqv_[pi](i, j, k)) / mass;
+    // The net inflows (flux_divergence) of mass and momentum, summed in the row loop.
+    for (std::size_t pi = 0; pi < g.patches.size(); ++pi) {
+      const IndexRange cells = g.patches[pi].cells();
+      const int i0 = cells.lo[0], n = cells.hi[0] - i0;
+      for_each_row(cells, [&](int j, int k) {
+        const double* fx = row_ptr(flux_.at(0, pi), i0, j, k);
+        const double *fy0 = row_ptr(flux_.at(1, pi), i0, j, k), *fy1 = row_ptr(flux_.at(1, pi), i0, j + 1, k);
+        const double *fz0 = row_ptr(flux_.at(2, pi), i0, j, k), *fz1 = row_ptr(flux_.at(2, pi), i0, j, k + 1);
+        const Vec3* vx = row_ptr(flux_v_.at(0, pi), i0, j, k);
+        const Vec3 *vy0 = row_ptr(flux_v_.at(1, pi), i0, j, k), *vy1 = row_ptr(flux_v_.at(1, pi), i0, j + 1, k);
+        const Vec3 *vz0 = row_ptr(flux_v_.at(2, pi), i0, j, k), *vz1 = row_ptr(flux_v_.at(2, pi), i0, j, k + 1);
+        const double* mass_L_row = row_ptr(mass_L_[m][pi], i0, j, k);
+        const Vec3* vel_L = row_ptr(vel_L_[m][pi], i0, j, k);
+        double* mass_new = row_ptr(mass_new_[pi], i0, j, k);
+        double* rho = row_ptr(f.rho_CC[pi], i0, j, k);
+        Vec3* vel = row_ptr(f.vel_CC[pi], i0, j, k);
+        for (int c = 0; c < n; ++c) {
+          const double dq = (fx[c] - fx[c + 1]) + (fy0[c] - fy1[c]) + (fz0[c] - fz1[c]);
+          const Vec3 dqv = Vec3((vx[c] - vx[c + 1]) + (vy0[c] - vy1[c]) + (vz0[c] - vz1[c]));
+          const double mass_L = mass_L_row[c];
+          const double mass = mass_L + dq;
+          mass_new[c] = mass;
+          rho[c] = mass / V;
+          vel[c] = (mass_L * vel_L[c] + dqv) / mass;
+        }
       });
+    }
     // Temperature (c_v constant per material) and specific volume.
     for (int q = 0; q < 2; ++q) {
       const CellScalars& psi = q == 0 ? temp_L_[m] : spv_L_[m];
       CellScalars& out = q == 0 ? f.temp_CC : f.sp_vol_CC;
       specific_fluxes(g, setup_.advection, psi, f.vel_FCME, flux_, dt, flux2_);
-      flux_divergence(g, flux2_, dq_);
-      for (std::size_t pi = 0; pi < g.patches.size(); ++pi)
-        for_each_cell(g.patches[pi].cells(), [&](int i, int j, int k) {
-          out[pi](i, j, k) = (mass_L_[m][pi](i, j, k) * psi[pi](i, j, k) + dq_[pi](i, j, k)) / mass_new_[pi](i, j, k);
+      for (std::size_t pi = 0; pi < g.patches.size(); ++pi) {
+        const IndexRange cells = g.patches[pi].cells();
+        const int i0 = cells.lo[0], n = cells.hi[0] - i0;
+        for_each_row(cells, [&](int j, int k) {
+          const double* fx = row_ptr(flux2_.at(0, pi), i0, j, k);
+          const double *fy0 = row_ptr(flux2_.at(1, pi), i0, j, k), *fy1 = row_ptr(flux2_.at(1, pi), i0, j + 1, k);
+          const double *fz0 = row_ptr(flux2_.at(2, pi), i0, j, k), *fz1 = row_ptr(flux2_.at(2, pi), i0, j, k + 1);
+          const double* mass_L = row_ptr(mass_L_[m][pi], i0, j, k);
+          const double* psi_row = row_ptr(psi[pi], i0, j, k);
+          const double* mass_new = row_ptr(mass_new_[pi], i0, j, k);
+          double* o = row_ptr(out[pi], i0, j, k);
+          for (int c = 0; c < n; ++c) {
+            const double dq = (fx[c] - fx[c + 1]) + (fy0[c] - fy1[c]) + (fz0[c] - fz1[c]);
+            o[c] = (mass_L[c] * psi_row[c] + dq) / mass_new[c];
+          }
         });
+      }
     }
     if (setup_.conserve_total_energy && mats_.size() == 1) add_advected_kinetic_energy_loss(m);  // IceEnergy.cpp
     if (model_src_) advect_model_scalars(m, dt);
