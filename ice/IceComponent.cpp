@@ -379,10 +379,23 @@ void IceComponent::check_state(int step, const char* phase) const {
         return rho > 0 && T > 0 && v > 0 && std::isfinite(rho) && std::isfinite(T) && std::isfinite(v) &&
                u.allFinite() && std::isfinite(p);
       };
-      // Threaded screen: min over the cells of 0 (good) or 1 (bad); the serial
-      // scan below then reports the first bad cell in (k, j, i) order.
-      if (row_minimum(g.patches[pi].cells_with_extra(), [&](int i, int j, int k) { return good(i, j, k) ? 1.0 : 0.0; }) > 0.0)
-        continue;
+      // Threaded screen over the rows; only a bad state goes to the serial
+      // scan below, which reports the first bad cell in (k, j, i) order.
+      const IndexRange box = g.patches[pi].cells_with_extra();
+      const int i0 = box.lo[0], n = box.hi[0] - i0;
+      std::vector<char> row_bad(static_cast<std::size_t>(box.extent()[1]) * box.extent()[2], 0);
+      for_each_row(box, [&](int j, int k) {
+        const double *rho = row_ptr(f.rho_CC[pi], i0, j, k), *T = row_ptr(f.temp_CC[pi], i0, j, k);
+        const double *v = row_ptr(f.sp_vol_CC[pi], i0, j, k), *p = row_ptr(press_CC_[pi], i0, j, k);
+        const Vec3* u = row_ptr(f.vel_CC[pi], i0, j, k);
+        bool bad = false;
+        for (int c = 0; c < n; ++c)
+          bad |= !(rho[c] > 0 && T[c] > 0 && v[c] > 0 && std::isfinite(rho[c]) && std::isfinite(T[c]) &&
+                   std::isfinite(v[c]) && std::isfinite(u[c][0]) && std::isfinite(u[c][1]) && std::isfinite(u[c][2]) &&
+                   std::isfinite(p[c]));
+        row_bad[static_cast<std::size_t>(k - box.lo[2]) * box.extent()[1] + (j - box.lo[1])] = bad;
+      });
+      if (std::find(row_bad.begin(), row_bad.end(), 1) == row_bad.end()) continue;
       for_each_cell_serial(g.patches[pi].cells_with_extra(), [&](int i, int j, int k) {
         if (good(i, j, k)) return;
         const double rho = f.rho_CC[pi](i, j, k), T = f.temp_CC[pi](i, j, k), v = f.sp_vol_CC[pi](i, j, k);
