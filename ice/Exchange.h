@@ -15,6 +15,7 @@
 // The N x N system (I + diag(sum_n beta_mn) - beta) x^new = x is solved per
 // call by Gaussian elimination without pivoting (the matrix is strictly
 // diagonally dominant by rows); N <= kMaxExchangeMaterials.
+#include <cassert>
 #include <span>
 
 namespace tephra {
@@ -24,12 +25,70 @@ constexpr int kMaxExchangeMaterials = 16;
 // x: in = values before exchange, out = after. theta, sp_vol, scale: per
 // material. coeff: n x n row-major, symmetric. x is scalar per material; call
 // once per velocity component.
-void solve_exchange(double dt, std::span<const double> theta, std::span<const double> sp_vol,
-                    std::span<const double> scale, std::span<const double> coeff, std::span<double> x);
+// solve_exchange3: the same for three components at once (one matrix factorisation).
+// Defined inline here: they run once per cell and face of multi-material
+// steps, where the call and the generic n cost more than the n <= 4 solve.
+namespace exchange_detail {
 
-// Same for three components at once (one matrix factorisation).
-void solve_exchange3(double dt, std::span<const double> theta, std::span<const double> sp_vol,
+// a = I + diag(sum_k beta_mk) - beta (row-major, n x n), beta_mk as above.
+inline void exchange_matrix(double dt, std::span<const double> theta, std::span<const double> sp_vol,
+                     std::span<const double> scale, std::span<const double> coeff, double* a) {
+  const int n = static_cast<int>(theta.size());
+  assert(n <= kMaxExchangeMaterials);
+  for (int m = 0; m < n; ++m) {
+    double diag = 1.0;
+    for (int k = 0; k < n; ++k) {
+      if (k == m) continue;
+      const double beta = dt * theta[k] * coeff[m * n + k] * sp_vol[m] * (scale.empty() ? 1.0 : scale[m]);
+      a[m * n + k] = -beta;
+      diag += beta;
+    }
+    a[m * n + m] = diag;
+  }
+}
+
+// Gaussian elimination without pivoting on the n x n system a x = b for
+// nrhs right-hand sides (overwritten with the solutions). The exchange matrix
+// is strictly diagonally dominant by rows (a_mm = 1 + sum_k |a_mk| for
+// non-negative coefficients, volume fractions and specific volumes), a
+// property elimination keeps, so no pivot is needed and none is small
+// (Golub & Van Loan, Matrix Computations, sec. 3.4.10).
+inline void solve_dominant(int n, double* a, std::span<double>* b, int nrhs) {
+  for (int p = 0; p < n; ++p) {
+    const double inv = 1.0 / a[p * n + p];
+    for (int r = p + 1; r < n; ++r) {
+      const double f = a[r * n + p] * inv;
+      if (f == 0.0) continue;
+      for (int c = p + 1; c < n; ++c) a[r * n + c] -= f * a[p * n + c];
+      for (int q = 0; q < nrhs; ++q) b[q][r] -= f * b[q][p];
+    }
+  }
+  for (int p = n - 1; p >= 0; --p) {
+    const double inv = 1.0 / a[p * n + p];
+    for (int q = 0; q < nrhs; ++q) {
+      double s = b[q][p];
+      for (int c = p + 1; c < n; ++c) s -= a[p * n + c] * b[q][c];
+      b[q][p] = s * inv;
+    }
+  }
+}
+
+}  // namespace exchange_detail
+
+inline void solve_exchange(double dt, std::span<const double> theta, std::span<const double> sp_vol,
+                    std::span<const double> scale, std::span<const double> coeff, std::span<double> x) {
+  double a[kMaxExchangeMaterials * kMaxExchangeMaterials];
+  exchange_detail::exchange_matrix(dt, theta, sp_vol, scale, coeff, a);
+  exchange_detail::solve_dominant(static_cast<int>(theta.size()), a, &x, 1);
+}
+
+inline void solve_exchange3(double dt, std::span<const double> theta, std::span<const double> sp_vol,
                      std::span<const double> coeff, std::span<double> ux, std::span<double> uy,
-                     std::span<double> uz);
+                     std::span<double> uz) {
+  double a[kMaxExchangeMaterials * kMaxExchangeMaterials];
+  exchange_detail::exchange_matrix(dt, theta, sp_vol, {}, coeff, a);
+  std::span<double> b[3] = {ux, uy, uz};
+  exchange_detail::solve_dominant(static_cast<int>(theta.size()), a, b, 3);
+}
 
 }  // namespace tephra

@@ -9,6 +9,7 @@
 
 #include "core/base/Errors.h"
 #include "core/grid/Loop.h"
+#include "ice/RowLoop.h"
 
 namespace tephra {
 
@@ -49,9 +50,10 @@ class Slopes {
     const std::ptrdiff_t sx = 1, sy = std::ptrdiff_t(q.offset(c0[0], c0[1] + 1, c0[2]) - q.offset(c0[0], c0[1], c0[2])),
                          sz = std::ptrdiff_t(q.offset(c0[0], c0[1], c0[2] + 1) - q.offset(c0[0], c0[1], c0[2]));
     const std::ptrdiff_t stride[3] = {sx, sy, sz};
-    for_each_cell(r, [&](int i, int j, int k) {
-      const std::size_t off = q.offset(i, j, k);
-      compute(base + off, stride, s + 3 * off);
+    const int n = r.hi[0] - r.lo[0];
+    for_each_row(r, [&](int j, int k) {
+      const std::size_t off0 = q.offset(r.lo[0], j, k);
+      for (int c = 0; c < n; ++c) compute(base + off0 + c, stride, s + 3 * (off0 + c));
     });
   }
   const T* at_offset(std::size_t off) const { return s_ + 3 * off; }
@@ -106,19 +108,19 @@ std::array<std::ptrdiff_t, 3> strides_of(const GridArray<T>& q) {
   return {1, std::ptrdiff_t(q.offset(c[0], c[1] + 1, c[2]) - o), std::ptrdiff_t(q.offset(c[0], c[1], c[2] + 1) - o)};
 }
 
-// q on the donor's slab for the face (i,j,k) normal to d (the low face of
-// cell R = (i,j,k), at storage offset offR in q) with face-volume fraction
-// phi (signed: > 0 flows toward +d, donor L = R - e_d); slopes is null for
-// first order.
+// q on the donor's slab for the face normal to d whose index along d is
+// face_d (the low face of cell R, at storage offset offR in q) with
+// face-volume fraction phi (signed: > 0 flows toward +d, donor L = R - e_d);
+// slopes is null for first order. periodic, cells_d: the grid along d.
 template <class T>
-T slab_value(const Grid& g, const GridArray<T>& q, const Slopes<T>* slopes, int d, const IntVec3& face,
-             std::size_t offR, std::ptrdiff_t stride_d, double phi) {
+inline T slab_value(bool periodic, int cells_d, const T* q, const Slopes<T>* slopes, int d, int face_d,
+                    std::size_t offR, std::ptrdiff_t stride_d, double phi) {
   const bool from_low = phi > 0.0;
   const std::size_t offD = from_low ? offR - stride_d : offR;
-  const T& qD = q.data()[offD];
+  const T& qD = q[offD];
   if (!slopes) return qD;
-  const int Dd = face[d] - (from_low ? 1 : 0);
-  if (!g.periodic[d] && (Dd < 0 || Dd >= g.cells[d])) return qD;  // extra cell: no slope (periodic: ghosts wrap)
+  const int Dd = face_d - (from_low ? 1 : 0);
+  if (!periodic && (Dd < 0 || Dd >= cells_d)) return qD;  // extra cell: no slope (periodic: ghosts wrap)
   const T dq = slopes->at_offset(offD)[d];
   const double s = from_low ? 1.0 : -1.0;
   return qD + dq * (s * 0.5 * (1.0 - std::abs(phi)));
@@ -126,25 +128,81 @@ T slab_value(const Grid& g, const GridArray<T>& q, const Slopes<T>* slopes, int 
 
 }  // namespace
 
+namespace {
+// Fraction of cell (i, j, k) that flows out through its six faces in dt.
+double exact_outflux(const Grid& g, const FaceScalars& u, std::size_t pi, double dt, int i, int j, int k) {
+  double out = 0;
+  for (int d = 0; d < 3; ++d) {
+    const GridArray<double>& f = u.at(d, pi);
+    const IntVec3 c(i, j, k), e = IntVec3::Unit(d);
+    out += std::max(0.0, -f(c)) * dt / g.dx[d] + std::max(0.0, f(IntVec3(c + e))) * dt / g.dx[d];
+  }
+  return out;
+}
+}  // namespace
+
 void check_outflux(const Grid& g, const FaceScalars& u, double dt, int step) {
   for (std::size_t pi = 0; pi < g.patches.size(); ++pi) {
     const Patch& p = g.patches[pi];
-    for_each_cell_serial(p.cells(), [&](int i, int j, int k) {
-      double out = 0;
-      for (int d = 0; d < 3; ++d) {
-        const GridArray<double>& f = u.at(d, pi);
-        const IntVec3 c(i, j, k), e = IntVec3::Unit(d);
-        out += std::max(0.0, -f(c)) * dt / g.dx[d] + std::max(0.0, f(IntVec3(c + e))) * dt / g.dx[d];
-      }
-      if (out > 1.0) {
-        std::ostringstream os;
-        os << "ICE advection at step " << step << ": cell (" << i << "," << j << "," << k
-           << ") would lose a fraction " << out << " > 1 of its content (face velocities too large for dt)";
-        throw NumericalFailure(os.str());
+    const IndexRange r = p.cells();
+    if (r.empty()) continue;
+    const int i0 = r.lo[0], n = r.hi[0] - i0, ny = r.hi[1] - r.lo[1];
+    const double rx = dt / g.dx[0], ry = dt / g.dx[1], rz = dt / g.dx[2];
+    // Per row: the first cell (lowest i) that would lose more than its content, or -1.
+    std::vector<int> failed(static_cast<std::size_t>(ny) * (r.hi[2] - r.lo[2]), -1);
+    for_each_row(r, [&](int j, int k) {
+      const double* ux = row_ptr(u.at(0, pi), i0, j, k);
+      const double* uy0 = row_ptr(u.at(1, pi), i0, j, k);
+      const double* uy1 = row_ptr(u.at(1, pi), i0, j + 1, k);
+      const double* uz0 = row_ptr(u.at(2, pi), i0, j, k);
+      const double* uz1 = row_ptr(u.at(2, pi), i0, j, k + 1);
+      for (int c = 0; c < n; ++c) {
+        // Outflow fraction through the low and high face of each direction (x, y, z in this order).
+        double out = 0;
+        out += std::max(0.0, -ux[c]) * rx + std::max(0.0, ux[c + 1]) * rx;
+        out += std::max(0.0, -uy0[c]) * ry + std::max(0.0, uy1[c]) * ry;
+        out += std::max(0.0, -uz0[c]) * rz + std::max(0.0, uz1[c]) * rz;
+        // The screen above multiplies by dt/dx; the decision uses the reference
+        // form (a dt)/dx of every term, so a margin of 1e-12 hands the cells
+        // near the bound to it.
+        if (out > 1.0 - 1e-12 && exact_outflux(g, u, pi, dt, i0 + c, j, k) > 1.0) {
+          failed[static_cast<std::size_t>(k - r.lo[2]) * ny + (j - r.lo[1])] = i0 + c;
+          return;
+        }
       }
     });
+    for (std::size_t row = 0; row < failed.size(); ++row) {
+      if (failed[row] < 0) continue;
+      const int i = failed[row], j = r.lo[1] + int(row % ny), k = r.lo[2] + int(row / ny);
+      const double out = exact_outflux(g, u, pi, dt, i, j, k);
+      std::ostringstream os;
+      os << "ICE advection at step " << step << ": cell (" << i << "," << j << "," << k
+         << ") would lose a fraction " << out << " > 1 of its content (face velocities too large for dt)";
+      throw NumericalFailure(os.str());
+    }
   }
 }
+
+namespace {
+
+// The faces normal to d of patch pi, one row at a time: face(j, k, i0, n, c,
+// offR, face_d, phi) for the n faces of the row, c = 0..n-1 the position in
+// the row (i = i0 + c), offR the storage offset in q of the face's high cell
+// R, face_d the face's index along d and phi = u_f dt/dx_d.
+template <class T, class Face>
+void for_each_face_row(const Grid& g, const Patch& patch, int d, const GridArray<T>& q, const GridArray<double>& uf,
+                       double dt, Face&& face) {
+  const IndexRange fr = faces_of(patch, d);
+  const int i0 = fr.lo[0], n = fr.hi[0] - i0;
+  const double r = dt / g.dx[d];
+  for_each_row(fr, [&](int j, int k) {
+    const double* u = row_ptr(uf, i0, j, k);
+    const std::size_t offR0 = q.offset(i0, j, k);
+    face(j, k, u, r, offR0, n);
+  });
+}
+
+}  // namespace
 
 void density_fluxes(const Grid& g, AdvectionOrder order, const CellScalars& q, const FaceScalars& u, double dt,
                     FaceScalars& flux) {
@@ -152,17 +210,24 @@ void density_fluxes(const Grid& g, AdvectionOrder order, const CellScalars& q, c
     std::optional<Slopes<double>> slopes;
     if (order != AdvectionOrder::First) slopes.emplace(g, g.patches[pi], q[pi]);
     for (int d = 0; d < 3; ++d) {
-      const GridArray<double>& uf = u.at(d, pi);
       GridArray<double>& F = flux.at(d, pi);
-      const double r = dt / g.dx[d];
       const std::ptrdiff_t stride_d = strides_of(q[pi])[d];
-      const GridArray<double>& qp = q[pi];
+      const double* qb = q[pi].data();
       const Slopes<double>* sl = slopes ? &*slopes : nullptr;
-      for_each_cell(faces_of(g.patches[pi], d), [&](int i, int j, int k) {
-        const double phi = uf(i, j, k) * r;
-        F(i, j, k) =
-            phi == 0.0 ? 0.0 : phi * slab_value(g, qp, sl, d, IntVec3(i, j, k), qp.offset(i, j, k), stride_d, phi);
-      });
+      const bool periodic = g.periodic[d];
+      const int cells_d = g.cells[d];
+      for_each_face_row(g, g.patches[pi], d, q[pi], u.at(d, pi), dt,
+                        [&](int j, int k, const double* uf, double r, std::size_t offR0, int n) {
+                          const int i0 = g.patches[pi].lo[0];
+                          double* out = row_ptr(F, i0, j, k);
+                          const int fd = d == 1 ? j : k;
+                          for (int c = 0; c < n; ++c) {
+                            const double phi = uf[c] * r;
+                            out[c] = phi == 0.0 ? 0.0
+                                                : phi * slab_value(periodic, cells_d, qb, sl, d, d == 0 ? i0 + c : fd,
+                                                                   offR0 + c, stride_d, phi);
+                          }
+                        });
     }
   }
 }
@@ -174,22 +239,29 @@ void specific_fluxes(const Grid& g, AdvectionOrder order, const PatchFields<Cell
     std::optional<Slopes<T>> slopes;
     if (order != AdvectionOrder::First) slopes.emplace(g, g.patches[pi], psi[pi]);
     for (int d = 0; d < 3; ++d) {
-      const GridArray<double>& uf = u.at(d, pi);
       const GridArray<double>& mf = mass_flux.at(d, pi);
       GridArray<T>& F = flux.at(d, pi);
-      const double r = dt / g.dx[d];
       const std::ptrdiff_t stride_d = strides_of(psi[pi])[d];
-      const GridArray<T>& qp = psi[pi];
+      const T* qb = psi[pi].data();
       const Slopes<T>* sl = slopes ? &*slopes : nullptr;
-      for_each_cell(faces_of(g.patches[pi], d), [&](int i, int j, int k) {
-        const double phi = uf(i, j, k) * r;
-        const std::size_t offR = qp.offset(i, j, k);
-        if (phi == 0.0) {
-          F(i, j, k) = T(qp.data()[offR] * 0.0);
-          return;
-        }
-        F(i, j, k) = mf(i, j, k) * slab_value(g, qp, sl, d, IntVec3(i, j, k), offR, stride_d, phi);
-      });
+      const bool periodic = g.periodic[d];
+      const int cells_d = g.cells[d];
+      for_each_face_row(g, g.patches[pi], d, psi[pi], u.at(d, pi), dt,
+                        [&](int j, int k, const double* uf, double r, std::size_t offR0, int n) {
+                          const int i0 = g.patches[pi].lo[0];
+                          T* out = row_ptr(F, i0, j, k);
+                          const double* m = row_ptr(mf, i0, j, k);
+                          const int fd = d == 1 ? j : k;
+                          for (int c = 0; c < n; ++c) {
+                            const double phi = uf[c] * r;
+                            if (phi == 0.0) {
+                              out[c] = T(qb[offR0 + c] * 0.0);
+                              continue;
+                            }
+                            out[c] = m[c] * slab_value(periodic, cells_d, qb, sl, d, d == 0 ? i0 + c : fd, offR0 + c,
+                                                       stride_d, phi);
+                          }
+                        });
     }
   }
 }
@@ -201,8 +273,14 @@ void flux_divergence(const Grid& g, const FaceData<T>& flux, PatchFields<CellFie
     const GridArray<T>& fy = flux.at(1, pi);
     const GridArray<T>& fz = flux.at(2, pi);
     GridArray<T>& out = dq[pi];
-    for_each_cell(g.patches[pi].cells(), [&](int i, int j, int k) {
-      out(i, j, k) = T((fx(i, j, k) - fx(i + 1, j, k)) + (fy(i, j, k) - fy(i, j + 1, k)) + (fz(i, j, k) - fz(i, j, k + 1)));
+    const IndexRange r = g.patches[pi].cells();
+    const int i0 = r.lo[0], n = r.hi[0] - i0;
+    for_each_row(r, [&](int j, int k) {
+      const T* x = row_ptr(fx, i0, j, k);
+      const T *y0 = row_ptr(fy, i0, j, k), *y1 = row_ptr(fy, i0, j + 1, k);
+      const T *z0 = row_ptr(fz, i0, j, k), *z1 = row_ptr(fz, i0, j, k + 1);
+      T* o = row_ptr(out, i0, j, k);
+      for (int c = 0; c < n; ++c) o[c] = T((x[c] - x[c + 1]) + (y0[c] - y1[c]) + (z0[c] - z1[c]));
     });
   }
 }

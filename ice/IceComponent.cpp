@@ -12,6 +12,7 @@
 #include "core/grid/Loop.h"
 #include "ice/Equilibration.h"
 #include "ice/IceBoundary.h"
+#include "ice/RowLoop.h"
 
 namespace tephra {
 
@@ -198,6 +199,25 @@ void IceComponent::fluids_fill_volume_left_by_solids() {
     });
 }
 
+namespace {
+// min over the cells of r of value(i, j, k), threaded over the rows of r
+// (a minimum does not depend on the order of the comparisons).
+template <class Value>
+double row_minimum(const IndexRange& r, Value&& value) {
+  if (r.empty()) return std::numeric_limits<double>::infinity();
+  const int ny = r.hi[1] - r.lo[1];
+  std::vector<double> row_min(static_cast<std::size_t>(ny) * (r.hi[2] - r.lo[2]), std::numeric_limits<double>::infinity());
+  for_each_row(r, [&](int j, int k) {
+    double m = std::numeric_limits<double>::infinity();
+    for (int i = r.lo[0]; i < r.hi[0]; ++i) m = std::min(m, value(i, j, k));
+    row_min[static_cast<std::size_t>(k - r.lo[2]) * ny + (j - r.lo[1])] = m;
+  });
+  double m = std::numeric_limits<double>::infinity();
+  for (double v : row_min) m = std::min(m, v);
+  return m;
+}
+}  // namespace
+
 // Uintah's ICE time step (computeStableTimestep), knob = knob_for_speedSound:
 //   aggressive:   dt = cfl * min over materials, interior cells, directions d
 //                 of dx_d / (knob c + |u_d|);
@@ -217,11 +237,13 @@ double IceComponent::stable_timestep() const {
   if (setup_.delt_scheme == DeltScheme::Aggressive) {
     for (const IceMaterialFields& f : mats_)
       for (std::size_t pi = 0; pi < g.patches.size(); ++pi)
-        for_each_cell_serial(g.patches[pi].cells(), [&](int i, int j, int k) {
+        dt = std::min(dt, row_minimum(g.patches[pi].cells(), [&](int i, int j, int k) {
+          double r = std::numeric_limits<double>::infinity();
           const double c = knob * f.speedSound_CC[pi](i, j, k);
           const Vec3& u = f.vel_CC[pi](i, j, k);
-          for (int d = 0; d < 3; ++d) dt = std::min(dt, g.dx[d] / (c + std::abs(u[d]) + 1e-100));
-        });
+          for (int d = 0; d < 3; ++d) r = std::min(r, g.dx[d] / (c + std::abs(u[d]) + 1e-100));
+          return r;
+        }));
   } else {
     const Vec3 area(g.dx[1] * g.dx[2], g.dx[0] * g.dx[2], g.dx[0] * g.dx[1]);
     const double V = g.cell_volume();
@@ -230,7 +252,7 @@ double IceComponent::stable_timestep() const {
       const IceMaterialFields& f = mats_[m];
       const IceMaterialSpec& spec = setup_.materials[m];
       for (std::size_t pi = 0; pi < g.patches.size(); ++pi)
-        for_each_cell_serial(g.patches[pi].cells(), [&](int i, int j, int k) {
+        dt = std::min(dt, row_minimum(g.patches[pi].cells(), [&](int i, int j, int k) {
           const IntVec3 C(i, j, k);
           const double v = f.sp_vol_CC[pi](C);
           const double diff_vel =
@@ -244,8 +266,8 @@ double IceComponent::stable_timestep() const {
             const double extra = knob * c + std::abs(uR - uL) + grav_vel + diff_vel;
             swept += area[d] * (std::max(0.0, 0.5 * (uC + uR) + extra) + std::max(0.0, -(0.5 * (uC + uL) - extra)));
           }
-          dt = std::min(dt, V / (swept + 1e-100));
-        });
+          return V / (swept + 1e-100);
+        }));
     }
   }
   dt *= setup_.cfl;
@@ -350,20 +372,43 @@ void IceComponent::check_state(int step, const char* phase) const {
   const Grid& g = setup_.grid;
   for (std::size_t m = 0; m < mats_.size(); ++m) {
     const IceMaterialFields& f = mats_[m];
-    for (std::size_t pi = 0; pi < g.patches.size(); ++pi)
-      for_each_cell_serial(g.patches[pi].cells_with_extra(), [&](int i, int j, int k) {
+    for (std::size_t pi = 0; pi < g.patches.size(); ++pi) {
+      auto good = [&](int i, int j, int k) {
         const double rho = f.rho_CC[pi](i, j, k), T = f.temp_CC[pi](i, j, k), v = f.sp_vol_CC[pi](i, j, k);
         const Vec3& u = f.vel_CC[pi](i, j, k);
         const double p = press_CC_[pi](i, j, k);
-        if (rho > 0 && T > 0 && v > 0 && std::isfinite(rho) && std::isfinite(T) && std::isfinite(v) && u.allFinite() &&
-            std::isfinite(p))
-          return;
+        return rho > 0 && T > 0 && v > 0 && std::isfinite(rho) && std::isfinite(T) && std::isfinite(v) &&
+               u.allFinite() && std::isfinite(p);
+      };
+      // Threaded screen over the rows; only a bad state goes to the serial
+      // scan below, which reports the first bad cell in (k, j, i) order.
+      const IndexRange box = g.patches[pi].cells_with_extra();
+      const int i0 = box.lo[0], n = box.hi[0] - i0;
+      std::vector<char> row_bad(static_cast<std::size_t>(box.extent()[1]) * box.extent()[2], 0);
+      for_each_row(box, [&](int j, int k) {
+        const double *rho = row_ptr(f.rho_CC[pi], i0, j, k), *T = row_ptr(f.temp_CC[pi], i0, j, k);
+        const double *v = row_ptr(f.sp_vol_CC[pi], i0, j, k), *p = row_ptr(press_CC_[pi], i0, j, k);
+        const Vec3* u = row_ptr(f.vel_CC[pi], i0, j, k);
+        bool bad = false;
+        for (int c = 0; c < n; ++c)
+          bad |= !(rho[c] > 0 && T[c] > 0 && v[c] > 0 && std::isfinite(rho[c]) && std::isfinite(T[c]) &&
+                   std::isfinite(v[c]) && std::isfinite(u[c][0]) && std::isfinite(u[c][1]) && std::isfinite(u[c][2]) &&
+                   std::isfinite(p[c]));
+        row_bad[static_cast<std::size_t>(k - box.lo[2]) * box.extent()[1] + (j - box.lo[1])] = bad;
+      });
+      if (std::find(row_bad.begin(), row_bad.end(), 1) == row_bad.end()) continue;
+      for_each_cell_serial(g.patches[pi].cells_with_extra(), [&](int i, int j, int k) {
+        if (good(i, j, k)) return;
+        const double rho = f.rho_CC[pi](i, j, k), T = f.temp_CC[pi](i, j, k), v = f.sp_vol_CC[pi](i, j, k);
+        const Vec3& u = f.vel_CC[pi](i, j, k);
+        const double p = press_CC_[pi](i, j, k);
         std::ostringstream os;
         os << "ICE " << phase << " at step " << step << ": material " << m << " cell (" << i << "," << j << "," << k
            << ") has rho_CC = " << rho << ", temp_CC = " << T << ", sp_vol_CC = " << v << ", vel_CC = ("
            << u[0] << "," << u[1] << "," << u[2] << "), press_CC = " << p;
         throw NumericalFailure(os.str());
       });
+    }
   }
 }
 

@@ -40,6 +40,7 @@
 #include "core/grid/Loop.h"
 #include "ice/IceAdvection.h"
 #include "ice/IceComponent.h"
+#include "ice/RowLoop.h"
 
 namespace tephra {
 
@@ -56,21 +57,35 @@ void IceComponent::face_pressure_work(double /*dt*/) {
   if (mats_.size() != 1) throw std::logic_error("face_pressure_work: one ICE material only (IceEnergy.cpp)");
   for (std::size_t m = 0; m < mats_.size(); ++m) {
     const IceMaterialFields& f = mats_[m];
-    for (std::size_t pi = 0; pi < g.patches.size(); ++pi)
-      for_each_cell(g.patches[pi].cells(), [&](int i, int j, int k) {
-        const IntVec3 c(i, j, k);
-        double work = 0;
-        for (int d = 0; d < 3; ++d) {
-          const IntVec3 hi(c + IntVec3::Unit(d));
-          const GridArray<double>& pf = press_FC_.at(d, pi);
-          const GridArray<double>& A = flux_.at(d, pi);
-          work += pf(c) * A(c) - pf(hi) * A(hi);  // inflow through the low face minus outflow through the high face
+    for (std::size_t pi = 0; pi < g.patches.size(); ++pi) {
+      const IndexRange cells = g.patches[pi].cells();
+      const int i0 = cells.lo[0], n = cells.hi[0] - i0;
+      for_each_row(cells, [&](int j, int k) {
+        // Face rows: the low faces of the row's cells (pf*0, A*0) and the high faces (pf*1, A*1).
+        const double* pfx = row_ptr(press_FC_.at(0, pi), i0, j, k);
+        const double* Ax = row_ptr(flux_.at(0, pi), i0, j, k);
+        const double *pfy0 = row_ptr(press_FC_.at(1, pi), i0, j, k), *pfy1 = row_ptr(press_FC_.at(1, pi), i0, j + 1, k);
+        const double *Ay0 = row_ptr(flux_.at(1, pi), i0, j, k), *Ay1 = row_ptr(flux_.at(1, pi), i0, j + 1, k);
+        const double *pfz0 = row_ptr(press_FC_.at(2, pi), i0, j, k), *pfz1 = row_ptr(press_FC_.at(2, pi), i0, j, k + 1);
+        const double *Az0 = row_ptr(flux_.at(2, pi), i0, j, k), *Az1 = row_ptr(flux_.at(2, pi), i0, j, k + 1);
+        const double* speed = row_ptr(f.speedSound_CC[pi], i0, j, k);
+        const double* sp_vol = row_ptr(f.sp_vol_CC[pi], i0, j, k);
+        const double* vol_frac = row_ptr(f.vol_frac_CC[pi], i0, j, k);
+        const double* press = row_ptr(press_CC_[pi], i0, j, k);
+        const double* delP = row_ptr(delP_Dilatate_[pi], i0, j, k);
+        double* corr = row_ptr(work_corr_[m][pi], i0, j, k);
+        for (int c = 0; c < n; ++c) {
+          double work = 0;  // inflow through the low face minus outflow through the high face, x, y, z
+          work += pfx[c] * Ax[c] - pfx[c + 1] * Ax[c + 1];
+          work += pfy0[c] * Ay0[c] - pfy1[c] * Ay1[c];
+          work += pfz0[c] * Az0[c] - pfz1[c] * Az1[c];
+          const double ss = speed[c];
+          const double kappa = sp_vol[c] / (ss * ss);
+          const double cell_work = V * vol_frac[c] * kappa * press[c] * delP[c];
+          corr[c] = V * work - cell_work;
         }
-        const double ss = f.speedSound_CC[pi](c);
-        const double kappa = f.sp_vol_CC[pi](c) / (ss * ss);
-        const double cell_work = V * f.vol_frac_CC[pi](c) * kappa * press_CC_[pi](c) * delP_Dilatate_[pi](c);
-        work_corr_[m][pi](c) = V * work - cell_work;
       });
+    }
   }
 }
 
@@ -81,25 +96,40 @@ void IceComponent::add_face_pressure_work(std::size_t m, std::size_t pi, double 
   const Grid& g = setup_.grid;
   const double V = g.cell_volume();
   IceMaterialFields& f = mats_[m];
-  for_each_cell(g.patches[pi].cells(), [&](int i, int j, int k) {
-    const IntVec3 c(i, j, k);
-    Vec3 grad_p;
-    for (int d = 0; d < 3; ++d) {
-      const GridArray<double>& pf = press_FC_.at(d, pi);
-      grad_p[d] = (pf(IntVec3(c + IntVec3::Unit(d))) - pf(c)) / g.dx[d];
+  const IndexRange cells = g.patches[pi].cells();
+  const int i0 = cells.lo[0], n = cells.hi[0] - i0;
+  const double dx[3] = {g.dx[0], g.dx[1], g.dx[2]};
+  for_each_row(cells, [&](int j, int k) {
+    const double* pfx = row_ptr(press_FC_.at(0, pi), i0, j, k);
+    const double *pfy0 = row_ptr(press_FC_.at(1, pi), i0, j, k), *pfy1 = row_ptr(press_FC_.at(1, pi), i0, j + 1, k);
+    const double *pfz0 = row_ptr(press_FC_.at(2, pi), i0, j, k), *pfz1 = row_ptr(press_FC_.at(2, pi), i0, j, k + 1);
+    const double* rho = row_ptr(f.rho_CC[pi], i0, j, k);
+    const double* vol_frac = row_ptr(f.vol_frac_CC[pi], i0, j, k);
+    const Vec3* vel = row_ptr(f.vel_CC[pi], i0, j, k);
+    const Vec3* mom_L = row_ptr(f.mom_L_CC[pi], i0, j, k);
+    const double* corr = row_ptr(work_corr_[m][pi], i0, j, k);
+    const double* mass_L = row_ptr(mass_L_[m][pi], i0, j, k);
+    const double* cv = row_ptr(cv_CC_[m][pi], i0, j, k);
+    double* int_eng_L = row_ptr(f.int_eng_L_CC[pi], i0, j, k);
+    double* temp_L = row_ptr(temp_L_[m][pi], i0, j, k);
+    for (int c = 0; c < n; ++c) {
+      Vec3 grad_p;
+      grad_p[0] = (pfx[c + 1] - pfx[c]) / dx[0];
+      grad_p[1] = (pfy1[c] - pfy0[c]) / dx[1];
+      grad_p[2] = (pfz1[c] - pfz0[c]) / dx[2];
+      const double mass = rho[c] * V;
+      const Vec3 impulse = -dt * V * vol_frac[c] * grad_p;
+      const Vec3 u_mid = 0.5 * (vel[c] + mom_L[c] / mass);
+      int_eng_L[c] += corr[c] - impulse.dot(u_mid);
+      temp_L[c] = int_eng_L[c] / (mass_L[c] * cv[c]);
     }
-    const double mass = f.rho_CC[pi](c) * V;
-    const Vec3 impulse = -dt * V * f.vol_frac_CC[pi](c) * grad_p;
-    const Vec3 u_mid = 0.5 * (f.vel_CC[pi](c) + f.mom_L_CC[pi](c) / mass);
-    f.int_eng_L_CC[pi](c) += work_corr_[m][pi](c) - impulse.dot(u_mid);
-    temp_L_[m][pi](c) = f.int_eng_L_CC[pi](c) / (mass_L_[m][pi](c) * cv_CC_[m][pi](c));
   });
 }
 
 // Correction 2 for material m, after the advection of mass (flux_, mass_new_),
 // momentum (flux_v_, vel_CC) and temperature (temp_CC): adds D/(M_new c_v)
 // to temp_CC (one material) or to work_corr_[0] (a mixture: split by mass in
-// add_mixture_advected_kinetic_energy_loss). Uses flux2_ and dq_ as scratch.
+// add_mixture_advected_kinetic_energy_loss). Uses flux2_ as scratch.
 void IceComponent::add_advected_kinetic_energy_loss(std::size_t m) {
   const Grid& g = setup_.grid;
   const bool mixture = energy_correction() == EnergyCorrection::Mixture;
@@ -109,21 +139,41 @@ void IceComponent::add_advected_kinetic_energy_loss(std::size_t m) {
       const GridArray<double>& F = flux_.at(d, pi);
       const GridArray<Vec3>& Fu = flux_v_.at(d, pi);
       GridArray<double>& K = flux2_.at(d, pi);
-      for_each_cell(IndexRange{g.patches[pi].lo, g.patches[pi].hi + IntVec3::Unit(d)}, [&](int i, int j, int k) {
+      const IndexRange faces{g.patches[pi].lo, g.patches[pi].hi + IntVec3::Unit(d)};
+      const int i0 = faces.lo[0], n = faces.hi[0] - i0;
+      for_each_row(faces, [&](int j, int k) {
+        const double* mf = row_ptr(F, i0, j, k);
+        const Vec3* mu = row_ptr(Fu, i0, j, k);
+        double* ke = row_ptr(K, i0, j, k);
         // 1/2 F |u_slab|^2 = 1/2 |F u_slab|^2 / F (F and F u_slab carry the sign of the face velocity).
-        const double mf = F(i, j, k);
-        K(i, j, k) = mf == 0.0 ? 0.0 : 0.5 * Fu(i, j, k).squaredNorm() / mf;
+        for (int c = 0; c < n; ++c) ke[c] = mf[c] == 0.0 ? 0.0 : 0.5 * mu[c].squaredNorm() / mf[c];
       });
     }
-  flux_divergence(g, flux2_, dq_);
-  for (std::size_t pi = 0; pi < g.patches.size(); ++pi)
-    for_each_cell(g.patches[pi].cells(), [&](int i, int j, int k) {
-      const double m_L = mass_L_[m][pi](i, j, k), m_new = mass_new_[pi](i, j, k);
-      const double ke_adv = 0.5 * m_L * vel_L_[m][pi](i, j, k).squaredNorm() + dq_[pi](i, j, k);
-      const double loss = ke_adv - 0.5 * m_new * f.vel_CC[pi](i, j, k).squaredNorm();
-      if (mixture) work_corr_[0][pi](i, j, k) += loss;  // split among the materials afterwards
-      else f.temp_CC[pi](i, j, k) += loss / (m_new * cv_CC_[m][pi](i, j, k));
+  for (std::size_t pi = 0; pi < g.patches.size(); ++pi) {
+    const IndexRange cells = g.patches[pi].cells();
+    const int i0 = cells.lo[0], n = cells.hi[0] - i0;
+    for_each_row(cells, [&](int j, int k) {
+      // The divergence of the kinetic-energy fluxes (flux_divergence) in the row loop.
+      const double* fx = row_ptr(flux2_.at(0, pi), i0, j, k);
+      const double *fy0 = row_ptr(flux2_.at(1, pi), i0, j, k), *fy1 = row_ptr(flux2_.at(1, pi), i0, j + 1, k);
+      const double *fz0 = row_ptr(flux2_.at(2, pi), i0, j, k), *fz1 = row_ptr(flux2_.at(2, pi), i0, j, k + 1);
+      const double* mass_L = row_ptr(mass_L_[m][pi], i0, j, k);
+      const double* mass_new = row_ptr(mass_new_[pi], i0, j, k);
+      const Vec3* vel_L = row_ptr(vel_L_[m][pi], i0, j, k);
+      const Vec3* vel = row_ptr(f.vel_CC[pi], i0, j, k);
+      const double* cv = row_ptr(cv_CC_[m][pi], i0, j, k);
+      double* temp = row_ptr(f.temp_CC[pi], i0, j, k);
+      double* corr = mixture ? row_ptr(work_corr_[0][pi], i0, j, k) : nullptr;
+      for (int c = 0; c < n; ++c) {
+        const double dq = (fx[c] - fx[c + 1]) + (fy0[c] - fy1[c]) + (fz0[c] - fz1[c]);
+        const double m_L = mass_L[c], m_new = mass_new[c];
+        const double ke_adv = 0.5 * m_L * vel_L[c].squaredNorm() + dq;
+        const double loss = ke_adv - 0.5 * m_new * vel[c].squaredNorm();
+        if (mixture) corr[c] += loss;  // split among the materials afterwards
+        else temp[c] += loss / (m_new * cv[c]);
+      }
     });
+  }
 }
 
 // ---- Mixtures of ICE materials -------------------------------------------

@@ -13,24 +13,13 @@
 #include "ice/IceAdvection.h"
 #include "ice/IceBoundary.h"
 #include "ice/IceComponent.h"
+#include "ice/RowLoop.h"
 
 namespace tephra {
 
 namespace {
 
 IndexRange faces_of(const Patch& p, int d) { return {p.lo, p.hi + IntVec3::Unit(d)}; }
-
-// kernel(j, k) once per (j, k) row of r, the kernel looping over
-// i in [r.lo[0], r.hi[0]) itself (a row is contiguous in every cell field),
-// for kernels that hand whole rows to batched EOS calls. Rows are shared
-// among threads as for_each_cell (core/grid/Loop.h) shares its (k, j) pairs.
-template <class Kernel>
-void for_each_row(const IndexRange& r, Kernel&& kernel) {
-  const int k0 = r.lo[2], k1 = r.hi[2], j0 = r.lo[1], j1 = r.hi[1];
-#pragma omp parallel for collapse(2) schedule(static) if (r.size() >= kMinCellsPerParallelLoop)
-  for (int k = k0; k < k1; ++k)
-    for (int j = j0; j < j1; ++j) kernel(j, k);
-}
 
 }  // namespace
 
@@ -122,11 +111,19 @@ void IceComponent::compute_face_velocities(double dt, const CellScalars& press) 
         GridArray<double>& uf = f.vel_FC.at(d, pi);
         const IntVec3 e = IntVec3::Unit(d);
         const double gdt = setup_.gravity[d] * dt, inv_dx = 1.0 / g.dx[d];
-        for_each_cell(faces_of(g.patches[pi], d), [&](int i, int j, int k) {
-          const IntVec3 R(i, j, k), L = R - e;
-          const double term1 = (rho(L) * u(L)[d] + rho(R) * u(R)[d]) / (rho(L) + rho(R));
-          const double sp_vol_brack = 2.0 * v(L) * v(R) / (v(L) + v(R));
-          uf(R) = term1 - dt * sp_vol_brack * (p(R) - p(L)) * inv_dx + gdt;
+        const IndexRange fr = faces_of(g.patches[pi], d);
+        const int i0 = fr.lo[0], n = fr.hi[0] - i0;
+        for_each_row(fr, [&](int j, int k) {
+          const IntVec3 R(i0, j, k), L = R - e;
+          const double *rhoL = row_ptr(rho, L), *rhoR = row_ptr(rho, R), *vL = row_ptr(v, L), *vR = row_ptr(v, R);
+          const double *pL = row_ptr(p, L), *pR = row_ptr(p, R);
+          const Vec3 *uL = row_ptr(u, L), *uR = row_ptr(u, R);
+          double* out = row_ptr(uf, R);
+          for (int c = 0; c < n; ++c) {
+            const double term1 = (rhoL[c] * uL[c][d] + rhoR[c] * uR[c][d]) / (rhoL[c] + rhoR[c]);
+            const double sp_vol_brack = 2.0 * vL[c] * vR[c] / (vL[c] + vR[c]);
+            out[c] = term1 - dt * sp_vol_brack * (pR[c] - pL[c]) * inv_dx + gdt;
+          }
         });
       }
       for (int face = 0; face < 6; ++face) {
@@ -150,18 +147,33 @@ void IceComponent::add_exchange_to_face_velocities(double dt) {
         continue;
       }
       const IntVec3 e = IntVec3::Unit(d);
-      for_each_cell(faces_of(g.patches[pi], d), [&](int i, int j, int k) {
-        const IntVec3 R(i, j, k), L = R - e;
-        double theta[kMaxExchangeMaterials], sv[kMaxExchangeMaterials], u[kMaxExchangeMaterials];
+      const IndexRange fr = faces_of(g.patches[pi], d);
+      const int i0 = fr.lo[0], n = fr.hi[0] - i0;
+      for_each_row(fr, [&](int j, int k) {
+        const IntVec3 R(i0, j, k), L = R - e;
+        const double *thL[kMaxExchangeMaterials], *thR[kMaxExchangeMaterials], *svL[kMaxExchangeMaterials],
+            *svR[kMaxExchangeMaterials], *uf[kMaxExchangeMaterials];
+        double* out[kMaxExchangeMaterials];
         for (std::size_t m = 0; m < nm; ++m) {
           const IceMaterialFields& f = mats_[m];
-          theta[m] = 0.5 * (f.vol_frac_CC[pi](L) + f.vol_frac_CC[pi](R));
-          const double vL = f.sp_vol_CC[pi](L), vR = f.sp_vol_CC[pi](R);
-          sv[m] = 2.0 * vL * vR / (vL + vR);
-          u[m] = f.vel_FC.at(d, pi)(R);
+          thL[m] = row_ptr(f.vol_frac_CC[pi], L);
+          thR[m] = row_ptr(f.vol_frac_CC[pi], R);
+          svL[m] = row_ptr(f.sp_vol_CC[pi], L);
+          svR[m] = row_ptr(f.sp_vol_CC[pi], R);
+          uf[m] = row_ptr(f.vel_FC.at(d, pi), R);
+          out[m] = row_ptr(mats_[m].vel_FCME.at(d, pi), R);
         }
-        solve_exchange(dt, {theta, nm}, {sv, nm}, {}, setup_.K, {u, nm});
-        for (std::size_t m = 0; m < nm; ++m) mats_[m].vel_FCME.at(d, pi)(R) = u[m];
+        for (int c = 0; c < n; ++c) {
+          double theta[kMaxExchangeMaterials], sv[kMaxExchangeMaterials], u[kMaxExchangeMaterials];
+          for (std::size_t m = 0; m < nm; ++m) {
+            theta[m] = 0.5 * (thL[m][c] + thR[m][c]);
+            const double vL = svL[m][c], vR = svR[m][c];
+            sv[m] = 2.0 * vL * vR / (vL + vR);
+            u[m] = uf[m][c];
+          }
+          solve_exchange(dt, {theta, nm}, {sv, nm}, {}, setup_.K, {u, nm});
+          for (std::size_t m = 0; m < nm; ++m) out[m][c] = u[m];
+        }
       });
     }
   if (nm == 1) return;
@@ -184,12 +196,23 @@ void IceComponent::compute_delP_and_pressure(double dt) {
   const Grid& g = setup_.grid;
   sum_volume_flux_and_kappa(dt);
   for (std::size_t pi = 0; pi < g.patches.size(); ++pi) {
-    for_each_cell(g.patches[pi].cells(), [&](int i, int j, int k) {
-      delP_Dilatate_[pi](i, j, k) /= sum_kappa_[pi](i, j, k);
-      press_CC_[pi](i, j, k) = press_equil_CC_[pi](i, j, k) + delP_Dilatate_[pi](i, j, k);
+    const IndexRange cells = g.patches[pi].cells();
+    const int i0 = cells.lo[0], n = cells.hi[0] - i0;
+    for_each_row(cells, [&](int j, int k) {
+      double* delP = row_ptr(delP_Dilatate_[pi], i0, j, k);
+      double* press = row_ptr(press_CC_[pi], i0, j, k);
+      const double* kappa = row_ptr(sum_kappa_[pi], i0, j, k);
+      const double* p_eq = row_ptr(press_equil_CC_[pi], i0, j, k);
+      for (int c = 0; c < n; ++c) {
+        delP[c] /= kappa[c];
+        press[c] = p_eq[c] + delP[c];
+      }
       if (model_src_) {  // + delP_MassX (IceModelStep.cpp), clamped at 1e-12 Pa as Uintah
-        delP_MassX_[pi](i, j, k) /= sum_kappa_[pi](i, j, k);
-        press_CC_[pi](i, j, k) = std::max(1e-12, press_CC_[pi](i, j, k) + delP_MassX_[pi](i, j, k));
+        double* delP_MassX = row_ptr(delP_MassX_[pi], i0, j, k);
+        for (int c = 0; c < n; ++c) {
+          delP_MassX[c] /= kappa[c];
+          press[c] = std::max(1e-12, press[c] + delP_MassX[c]);
+        }
       }
     });
     for (int face = 0; face < 6; ++face)
@@ -205,32 +228,71 @@ void IceComponent::sum_volume_flux_and_kappa(double dt) {
   const Grid& g = setup_.grid;
   delP_Dilatate_.fill(0.0);
   sum_kappa_.fill(0.0);
+  // One ICE material without source models: the equilibration set theta = 1
+  // in every cell, so the limited slopes of theta are 0 and every slab value
+  // is 1 + 0 = 1 exactly; the flux is phi itself (the bits density_fluxes gives).
+  const bool unit_theta = mats_.size() == 1 && !model_src_ && !setup_.materials[0].lagrangian;
   for (std::size_t m = 0; m < mats_.size(); ++m) {
     IceMaterialFields& f = mats_[m];
-    if (has_lagrangian_flux(m)) {
+    if (unit_theta) {
+      for (std::size_t pi = 0; pi < g.patches.size(); ++pi)
+        for (int d = 0; d < 3; ++d) {
+          const IndexRange fr = faces_of(g.patches[pi], d);
+          const int i0 = fr.lo[0], n = fr.hi[0] - i0;
+          const double r = dt / g.dx[d];
+          for_each_row(fr, [&](int j, int k) {
+            const double* u = row_ptr(f.vel_FCME.at(d, pi), i0, j, k);
+            double* F = row_ptr(flux_.at(d, pi), i0, j, k);
+            for (int c = 0; c < n; ++c) {
+              const double phi = u[c] * r;
+              F[c] = phi == 0.0 ? 0.0 : phi;
+            }
+          });
+        }
+    } else if (has_lagrangian_flux(m)) {
       lagrangian_volume_flux(m, flux_);  // MPMICE solid: from the particles (IceLagrangianFlux.cpp)
     } else {
       density_fluxes(g, setup_.advection, f.vol_frac_CC, f.vel_FCME, dt, flux_);
       scale_fluid_flux(m, dt, flux_);  // MPMICE: the face area the solids leave
     }
-    flux_divergence(g, flux_, dq_);
-    for (std::size_t pi = 0; pi < g.patches.size(); ++pi)
-      for_each_cell(g.patches[pi].cells(), [&](int i, int j, int k) {
-        const double c = f.speedSound_CC[pi](i, j, k);
-        sum_kappa_[pi](i, j, k) += f.vol_frac_CC[pi](i, j, k) * f.sp_vol_CC[pi](i, j, k) / (c * c);
-        delP_Dilatate_[pi](i, j, k) += dq_[pi](i, j, k);
+    // delP += net inflow (flux_divergence), sum_kappa += theta v / c^2.
+    for (std::size_t pi = 0; pi < g.patches.size(); ++pi) {
+      const IndexRange cells = g.patches[pi].cells();
+      const int i0 = cells.lo[0], n = cells.hi[0] - i0;
+      for_each_row(cells, [&](int j, int k) {
+        const double* fx = row_ptr(flux_.at(0, pi), i0, j, k);
+        const double *fy0 = row_ptr(flux_.at(1, pi), i0, j, k), *fy1 = row_ptr(flux_.at(1, pi), i0, j + 1, k);
+        const double *fz0 = row_ptr(flux_.at(2, pi), i0, j, k), *fz1 = row_ptr(flux_.at(2, pi), i0, j, k + 1);
+        const double* ss = row_ptr(f.speedSound_CC[pi], i0, j, k);
+        const double* theta = row_ptr(f.vol_frac_CC[pi], i0, j, k);
+        const double* v = row_ptr(f.sp_vol_CC[pi], i0, j, k);
+        double* kappa = row_ptr(sum_kappa_[pi], i0, j, k);
+        double* delP = row_ptr(delP_Dilatate_[pi], i0, j, k);
+        for (int c = 0; c < n; ++c) {
+          const double dq = (fx[c] - fx[c + 1]) + (fy0[c] - fy1[c]) + (fz0[c] - fz1[c]);
+          const double cs = ss[c];
+          kappa[c] += theta[c] * v[c] / (cs * cs);
+          delP[c] += dq;
+        }
       });
+    }
   }
 }
 
 // Step 5 (eq. 26.4): p* = (p_L rho_R + p_R rho_L)/(rho_L + rho_R), rho = sum_m rho_CC_m.
 void IceComponent::compute_face_pressure() {
   const Grid& g = setup_.grid;
+  const std::size_t nm = mats_.size();
   for (std::size_t pi = 0; pi < g.patches.size(); ++pi) {
-    for_each_cell(g.patches[pi].cells_with_extra(), [&](int i, int j, int k) {
-      double s = 0;
-      for (const IceMaterialFields& f : mats_) s += f.rho_CC[pi](i, j, k);
-      sum_rho_CC_[pi](i, j, k) = s;
+    const IndexRange box = g.patches[pi].cells_with_extra();
+    const int i0 = box.lo[0], n = box.hi[0] - i0;
+    for_each_row(box, [&](int j, int k) {
+      double* sum = row_ptr(sum_rho_CC_[pi], i0, j, k);
+      for (int c = 0; c < n; ++c) sum[c] = 0;
+      for (std::size_t m = 0; m < nm; ++m) {
+        const double* rho = row_ptr(mats_[m].rho_CC[pi], i0, j, k);
+        for (int c = 0; c < n; ++c) sum[c] += rho[c];
+      }
     });
   }
   halo_->exchange(sum_rho_CC_);
@@ -240,9 +302,13 @@ void IceComponent::compute_face_pressure() {
     for (int d = 0; d < 3; ++d) {
       GridArray<double>& pf = press_FC_.at(d, pi);
       const IntVec3 e = IntVec3::Unit(d);
-      for_each_cell(faces_of(g.patches[pi], d), [&](int i, int j, int k) {
-        const IntVec3 R(i, j, k), L = R - e;
-        pf(R) = (p(L) * rho(R) + p(R) * rho(L)) / (rho(L) + rho(R));
+      const IndexRange fr = faces_of(g.patches[pi], d);
+      const int i0 = fr.lo[0], n = fr.hi[0] - i0;
+      for_each_row(fr, [&](int j, int k) {
+        const IntVec3 R(i0, j, k), L = R - e;
+        const double *pL = row_ptr(p, L), *pR = row_ptr(p, R), *rL = row_ptr(rho, L), *rR = row_ptr(rho, R);
+        double* out = row_ptr(pf, R);
+        for (int c = 0; c < n; ++c) out[c] = (pL[c] * rR[c] + pR[c] * rL[c]) / (rL[c] + rR[c]);
       });
     }
   }
@@ -267,6 +333,8 @@ void IceComponent::lagrangian_values_and_exchange(double dt) {
   if (energy == EnergyCorrection::Mixture) mixture_face_pressure_work(dt);
   for (std::size_t pi = 0; pi < g.patches.size(); ++pi) {
     const Patch& patch = g.patches[pi];
+    const IndexRange with_extra = patch.cells_with_extra(), cells = patch.cells();
+    const int ie = with_extra.lo[0], ne = with_extra.hi[0] - ie, i0 = cells.lo[0], n = cells.hi[0] - i0;
     // Momentum and energy sources, Lagrangian values.
     for (std::size_t m = 0; m < nm; ++m) {
       IceMaterialFields& f = mats_[m];
@@ -275,71 +343,109 @@ void IceComponent::lagrangian_values_and_exchange(double dt) {
       const IceSpecificHeat* cv_model = setup_.materials[m].cv_model.get();
       const Vec3 gravity = setup_.materials[m].lagrangian ? Vec3::Zero() : setup_.gravity;
       const double cv_const = setup_.materials[m].cv;
-      for_each_cell(patch.cells_with_extra(), [&](int i, int j, int k) {
-        mass_L_[m][pi](i, j, k) = f.rho_CC[pi](i, j, k) * V;
-        cv_CC_[m][pi](i, j, k) = cv_model ? cv_model->cv(f.temp_CC[pi](i, j, k)) : cv_const;
+      for_each_row(with_extra, [&](int j, int k) {
+        const double* rho = row_ptr(f.rho_CC[pi], ie, j, k);
+        const double* temp = row_ptr(f.temp_CC[pi], ie, j, k);
+        double* mass = row_ptr(mass_L_[m][pi], ie, j, k);
+        double* cv = row_ptr(cv_CC_[m][pi], ie, j, k);
+        for (int c = 0; c < ne; ++c) mass[c] = rho[c] * V;
+        if (cv_model)
+          for (int c = 0; c < ne; ++c) cv[c] = cv_model->cv(temp[c]);
+        else
+          for (int c = 0; c < ne; ++c) cv[c] = cv_const;
       });
       compute_diffusion_sources(m, pi);
       const IceModelSources* ms = model_src_.get();
       const double min_mass = setup_.materials[m].tiny_rho * setup_.materials[m].sources[0].density * V;
-      for_each_cell(patch.cells(), [&](int i, int j, int k) {
-        const IntVec3 c(i, j, k);
-        const double mass = mass_L_[m][pi](c);
-        const double theta = f.vol_frac_CC[pi](c);
-        Vec3 grad_p;
-        for (int d = 0; d < 3; ++d) {
-          const GridArray<double>& pf = press_FC_.at(d, pi);
-          grad_p[d] = (pf(IntVec3(c + IntVec3::Unit(d))) - pf(c)) / g.dx[d];
+      const double dx[3] = {g.dx[0], g.dx[1], g.dx[2]};
+      for_each_row(cells, [&](int j, int k) {
+        const double* pfx = row_ptr(press_FC_.at(0, pi), i0, j, k);
+        const double *pfy0 = row_ptr(press_FC_.at(1, pi), i0, j, k), *pfy1 = row_ptr(press_FC_.at(1, pi), i0, j + 1, k);
+        const double *pfz0 = row_ptr(press_FC_.at(2, pi), i0, j, k), *pfz1 = row_ptr(press_FC_.at(2, pi), i0, j, k + 1);
+        double* mass_row = row_ptr(mass_L_[m][pi], i0, j, k);
+        const double* vol_frac = row_ptr(f.vol_frac_CC[pi], i0, j, k);
+        const double* speed = row_ptr(f.speedSound_CC[pi], i0, j, k);
+        const double* sp_vol = row_ptr(f.sp_vol_CC[pi], i0, j, k);
+        const double* cv_row = row_ptr(cv_CC_[m][pi], i0, j, k);
+        const double* temp = row_ptr(f.temp_CC[pi], i0, j, k);
+        const double* press = row_ptr(press_CC_[pi], i0, j, k);
+        const double* delP = row_ptr(delP_Dilatate_[pi], i0, j, k);
+        const double* heat = row_ptr(heat_[pi], i0, j, k);
+        const Vec3* visc = row_ptr(visc_force_[pi], i0, j, k);
+        const Vec3* vel = row_ptr(f.vel_CC[pi], i0, j, k);
+        Vec3* mom_source = row_ptr(f.mom_source_CC[pi], i0, j, k);
+        Vec3* mom_L_row = row_ptr(f.mom_L_CC[pi], i0, j, k);
+        double* int_eng_L = row_ptr(f.int_eng_L_CC[pi], i0, j, k);
+        Vec3* vel_L = row_ptr(vel_L_[m][pi], i0, j, k);
+        double* temp_L = row_ptr(temp_L_[m][pi], i0, j, k);
+        for (int c = 0; c < n; ++c) {
+          const double mass = mass_row[c];
+          const double theta = vol_frac[c];
+          Vec3 grad_p;
+          grad_p[0] = (pfx[c + 1] - pfx[c]) / dx[0];
+          grad_p[1] = (pfy1[c] - pfy0[c]) / dx[1];
+          grad_p[2] = (pfz1[c] - pfz0[c]) / dx[2];
+          // Viscous force and conduction (Diffusion.h): dt V div(theta tau), dt V div(theta k grad T).
+          // A lagrangian (MPM) material gets gravity on the MPM grid instead.
+          const Vec3 source = dt * (-V * theta * grad_p + mass * gravity + V * visc[c]);
+          mom_source[c] = source;
+          Vec3 mom_L = mass * vel[c] + source;
+          const double ss = speed[c];
+          const double kappa = sp_vol[c] / (ss * ss);
+          const double cv = cv_row[c];
+          double eint_L = mass * cv * temp[c] + V * theta * kappa * press[c] * delP[c] + dt * V * heat[c];
+          double mass_L = mass;
+          if (ms) {
+            // Model sources (Uintah computeLagrangianValues): M_L = max(M + S_M, tiny_rho V),
+            // (Mu)_L += S_mom, (Me)_L = max((Me)_L + S_E, M_min cv T).
+            const IntVec3 cell(i0 + c, j, k);
+            mass_L = std::max(mass + ms->mass[m][pi](cell), min_mass);
+            mom_L += ms->momentum[m][pi](cell);
+            eint_L = std::max(eint_L + ms->energy[m][pi](cell), min_mass * cv * temp[c]);
+            mass_row[c] = mass_L;
+          }
+          mom_L_row[c] = mom_L;
+          int_eng_L[c] = eint_L;
+          vel_L[c] = mom_L / mass_L;
+          temp_L[c] = eint_L / (mass_L * cv);
         }
-        // Viscous force and conduction (Diffusion.h): dt V div(theta tau), dt V div(theta k grad T).
-        // A lagrangian (MPM) material gets gravity on the MPM grid instead.
-        const Vec3 source = dt * (-V * theta * grad_p + mass * gravity + V * visc_force_[pi](c));
-        f.mom_source_CC[pi](c) = source;
-        Vec3 mom_L = mass * f.vel_CC[pi](c) + source;
-        const double ss = f.speedSound_CC[pi](c);
-        const double kappa = f.sp_vol_CC[pi](c) / (ss * ss);
-        const double cv = cv_CC_[m][pi](c);
-        double eint_L = mass * cv * f.temp_CC[pi](c) +
-                        V * theta * kappa * press_CC_[pi](c) * delP_Dilatate_[pi](c) + dt * V * heat_[pi](c);
-        double mass_L = mass;
-        if (ms) {
-          // Model sources (Uintah computeLagrangianValues): M_L = max(M + S_M, tiny_rho V),
-          // (Mu)_L += S_mom, (Me)_L = max((Me)_L + S_E, M_min cv T).
-          mass_L = std::max(mass + ms->mass[m][pi](c), min_mass);
-          mom_L += ms->momentum[m][pi](c);
-          eint_L = std::max(eint_L + ms->energy[m][pi](c), min_mass * cv * f.temp_CC[pi](c));
-          mass_L_[m][pi](c) = mass_L;
-        }
-        f.mom_L_CC[pi](c) = mom_L;
-        f.int_eng_L_CC[pi](c) = eint_L;
-        vel_L_[m][pi](c) = mom_L / mass_L;
-        temp_L_[m][pi](c) = eint_L / (mass_L * cv);
       });
       if (energy == EnergyCorrection::Single) add_face_pressure_work(m, pi, dt);  // IceEnergy.cpp
     }
     if (energy == EnergyCorrection::Mixture) add_mixture_face_pressure_work(pi, dt);  // IceEnergy.cpp
     // Momentum and heat exchange, cell by cell.
     if (nm > 1) {
-      for_each_cell(patch.cells(), [&](int i, int j, int k) {
-        const IntVec3 c(i, j, k);
-        double inv_cv[kMaxExchangeMaterials];
-        for (std::size_t m = 0; m < nm; ++m) inv_cv[m] = 1.0 / cv_CC_[m][pi](c);
-        double theta[kMaxExchangeMaterials], sv[kMaxExchangeMaterials], ux[kMaxExchangeMaterials],
-            uy[kMaxExchangeMaterials], uz[kMaxExchangeMaterials], T[kMaxExchangeMaterials];
+      for_each_row(cells, [&](int j, int k) {
+        const double *cv_m[kMaxExchangeMaterials], *theta_m[kMaxExchangeMaterials], *sv_m[kMaxExchangeMaterials];
+        Vec3* vel_m[kMaxExchangeMaterials];
+        double* temp_m[kMaxExchangeMaterials];
         for (std::size_t m = 0; m < nm; ++m) {
-          theta[m] = mats_[m].vol_frac_CC[pi](c);
-          sv[m] = mats_[m].sp_vol_CC[pi](c);
-          const Vec3& u = vel_L_[m][pi](c);
-          ux[m] = u[0];
-          uy[m] = u[1];
-          uz[m] = u[2];
-          T[m] = temp_L_[m][pi](c);
+          cv_m[m] = row_ptr(cv_CC_[m][pi], i0, j, k);
+          theta_m[m] = row_ptr(mats_[m].vol_frac_CC[pi], i0, j, k);
+          sv_m[m] = row_ptr(mats_[m].sp_vol_CC[pi], i0, j, k);
+          vel_m[m] = row_ptr(vel_L_[m][pi], i0, j, k);
+          temp_m[m] = row_ptr(temp_L_[m][pi], i0, j, k);
         }
-        solve_exchange3(dt, {theta, nm}, {sv, nm}, setup_.K, {ux, nm}, {uy, nm}, {uz, nm});
-        solve_exchange(dt, {theta, nm}, {sv, nm}, {inv_cv, nm}, setup_.H, {T, nm});
-        for (std::size_t m = 0; m < nm; ++m) {
-          vel_L_[m][pi](c) = Vec3(ux[m], uy[m], uz[m]);
-          temp_L_[m][pi](c) = T[m];
+        for (int c = 0; c < n; ++c) {
+          double inv_cv[kMaxExchangeMaterials];
+          for (std::size_t m = 0; m < nm; ++m) inv_cv[m] = 1.0 / cv_m[m][c];
+          double theta[kMaxExchangeMaterials], sv[kMaxExchangeMaterials], ux[kMaxExchangeMaterials],
+              uy[kMaxExchangeMaterials], uz[kMaxExchangeMaterials], T[kMaxExchangeMaterials];
+          for (std::size_t m = 0; m < nm; ++m) {
+            theta[m] = theta_m[m][c];
+            sv[m] = sv_m[m][c];
+            const Vec3& u = vel_m[m][c];
+            ux[m] = u[0];
+            uy[m] = u[1];
+            uz[m] = u[2];
+            T[m] = temp_m[m][c];
+          }
+          solve_exchange3(dt, {theta, nm}, {sv, nm}, setup_.K, {ux, nm}, {uy, nm}, {uz, nm});
+          solve_exchange(dt, {theta, nm}, {sv, nm}, {inv_cv, nm}, setup_.H, {T, nm});
+          for (std::size_t m = 0; m < nm; ++m) {
+            vel_m[m][c] = Vec3(ux[m], uy[m], uz[m]);
+            temp_m[m][c] = T[m];
+          }
         }
       });
       if (energy == EnergyCorrection::Mixture) add_exchange_kinetic_energy_loss(pi);  // IceEnergy.cpp
@@ -360,42 +466,56 @@ void IceComponent::lagrangian_values_and_exchange(double dt) {
     if (nm == 1) {
       IceMaterialFields& f = mats_[0];
       const double tiny_v = setup_.materials[0].tiny_rho * setup_.materials[0].sources[0].density * V;
-      for_each_cell(patch.cells(), [&](int i, int j, int k) {
-        const IntVec3 c(i, j, k);
-        const double ss = f.speedSound_CC[pi](c);
-        const double theta_kappa = f.vol_frac_CC[pi](c) * f.sp_vol_CC[pi](c) / (ss * ss);
-        const double mass = f.rho_CC[pi](c) * V;
-        double sp_vol_L = mass * f.sp_vol_CC[pi](c) - V * theta_kappa * delP_Dilatate_[pi](c);
-        if (model_src_) sp_vol_L += model_src_->sp_vol[0][pi](c);
-        if (setup_.clamp_sp_vol) sp_vol_L = std::max(sp_vol_L, tiny_v * f.sp_vol_CC[pi](c));
-        spv_L_[0][pi](c) = sp_vol_L / mass_L_[0][pi](c);
+      const double* model_spv = nullptr;
+      for_each_row(cells, [&](int j, int k) {
+        const double* speed = row_ptr(f.speedSound_CC[pi], i0, j, k);
+        const double* vol_frac = row_ptr(f.vol_frac_CC[pi], i0, j, k);
+        const double* sp_vol = row_ptr(f.sp_vol_CC[pi], i0, j, k);
+        const double* rho = row_ptr(f.rho_CC[pi], i0, j, k);
+        const double* delP = row_ptr(delP_Dilatate_[pi], i0, j, k);
+        const double* mass_L = row_ptr(mass_L_[0][pi], i0, j, k);
+        const double* src = model_src_ ? row_ptr(model_src_->sp_vol[0][pi], i0, j, k) : model_spv;
+        double* spv_L = row_ptr(spv_L_[0][pi], i0, j, k);
+        for (int c = 0; c < n; ++c) {
+          const double ss = speed[c];
+          const double theta_kappa = vol_frac[c] * sp_vol[c] / (ss * ss);
+          const double mass = rho[c] * V;
+          double sp_vol_L = mass * sp_vol[c] - V * theta_kappa * delP[c];
+          if (src) sp_vol_L += src[c];
+          if (setup_.clamp_sp_vol) sp_vol_L = std::max(sp_vol_L, tiny_v * sp_vol[c]);
+          spv_L[c] = sp_vol_L / mass_L[c];
+        }
       });
-    } else for_each_cell(patch.cells(), [&](int i, int j, int k) {
-      const IntVec3 c(i, j, k);
-      const std::size_t off = press_CC_[pi].offset(i, j, k);
+    } else for_each_row(cells, [&](int j, int k) {
+      const std::size_t off0 = press_CC_[pi].offset(i0, j, k);
+      for (int c = 0; c < n; ++c) {
+      const IntVec3 cell(i0 + c, j, k);
+      const std::size_t off = off0 + c;
       double sum_theta_kappa = 0, sum_therm = 0;
       double theta_kappa[kMaxExchangeMaterials], therm[kMaxExchangeMaterials];
       for (std::size_t m = 0; m < nm; ++m) {
         const IceMaterialFields& f = mats_[m];
-        const double ss = f.speedSound_CC[pi](c);
-        theta_kappa[m] = f.vol_frac_CC[pi](c) * f.sp_vol_CC[pi](c) / (ss * ss);
-        const double tdot = (temp_L_[m][pi](c) - f.temp_CC[pi](c)) / dt;
-        therm[m] = f.vol_frac_CC[pi](c) * beta_tdot[m][off] * tdot;
+        const double ss = f.speedSound_CC[pi].data()[off];
+        theta_kappa[m] = f.vol_frac_CC[pi].data()[off] * f.sp_vol_CC[pi].data()[off] / (ss * ss);
+        const double tdot = (temp_L_[m][pi].data()[off] - f.temp_CC[pi].data()[off]) / dt;
+        therm[m] = f.vol_frac_CC[pi].data()[off] * beta_tdot[m][off] * tdot;
         sum_theta_kappa += theta_kappa[m];
         sum_therm += therm[m];
       }
       for (std::size_t m = 0; m < nm; ++m) {
         const IceMaterialFields& f = mats_[m];
-        const double mass = f.rho_CC[pi](c) * V;  // before the model mass source
+        const double mass = f.rho_CC[pi].data()[off] * V;  // before the model mass source
         const double f_theta = theta_kappa[m] / sum_theta_kappa;
-        double sp_vol_L = mass * f.sp_vol_CC[pi](c) - V * theta_kappa[m] * delP_Dilatate_[pi](c) +
+        const double sp_vol = f.sp_vol_CC[pi].data()[off];
+        double sp_vol_L = mass * sp_vol - V * theta_kappa[m] * delP_Dilatate_[pi].data()[off] +
                           dt * V * (therm[m] - f_theta * sum_therm);
-        if (model_src_) sp_vol_L += model_src_->sp_vol[m][pi](c);  // Uintah modelVol_src
+        if (model_src_) sp_vol_L += model_src_->sp_vol[m][pi](cell);  // Uintah modelVol_src
         // <ClampSpecificVolume> (Uintah): M v_L >= tiny_rho V v.
         if (setup_.clamp_sp_vol)
           sp_vol_L = std::max(sp_vol_L, setup_.materials[m].tiny_rho * setup_.materials[m].sources[0].density * V *
-                                            f.sp_vol_CC[pi](c));
-        spv_L_[m][pi](c) = sp_vol_L / mass_L_[m][pi](c);
+                                            sp_vol);
+        spv_L_[m][pi].data()[off] = sp_vol_L / mass_L_[m][pi].data()[off];
+      }
       }
     });
   }
@@ -433,10 +553,19 @@ void IceComponent::lagrangian_values_and_exchange(double dt) {
         }
       }
       if (setup_.lodi.enabled) lodi_lagrangian_bc(m, pi);
-      for_each_cell(p.cells_with_extra(), [&](int i, int j, int k) {
-        const double mass = mass_L_[m][pi](i, j, k);
-        f.mom_L_ME_CC[pi](i, j, k) = mass * vel_L_[m][pi](i, j, k);
-        f.eng_L_ME_CC[pi](i, j, k) = mass * cv_CC_[m][pi](i, j, k) * temp_L_[m][pi](i, j, k);
+      const IndexRange with_extra = p.cells_with_extra();
+      const int ie = with_extra.lo[0], ne = with_extra.hi[0] - ie;
+      for_each_row(with_extra, [&](int j, int k) {
+        const double* mass = row_ptr(mass_L_[m][pi], ie, j, k);
+        const Vec3* vel = row_ptr(vel_L_[m][pi], ie, j, k);
+        const double* cv = row_ptr(cv_CC_[m][pi], ie, j, k);
+        const double* temp = row_ptr(temp_L_[m][pi], ie, j, k);
+        Vec3* mom = row_ptr(f.mom_L_ME_CC[pi], ie, j, k);
+        double* eng = row_ptr(f.eng_L_ME_CC[pi], ie, j, k);
+        for (int c = 0; c < ne; ++c) {
+          mom[c] = mass[c] * vel[c];
+          eng[c] = mass[c] * cv[c] * temp[c];
+        }
       });
     }
     halo_->exchange(mass_L_[m]);
@@ -504,17 +633,34 @@ void IceComponent::advect_and_advance(double dt, int step) {
     // Mass first; its face fluxes carry the specific quantities.
     density_fluxes(g, setup_.advection, mass_L_[m], f.vel_FCME, dt, flux_);
     scale_fluid_flux(m, dt, flux_);  // MPMICE: the face area the solids leave (IceLagrangianFlux.cpp)
-    flux_divergence(g, flux_, dq_);
     specific_fluxes(g, setup_.advection, vel_L_[m], f.vel_FCME, flux_, dt, flux_v_);
-    flux_divergence(g, flux_v_, dqv_);
-    for (std::size_t pi = 0; pi < g.patches.size(); ++pi)
-      for_each_cell(g.patches[pi].cells(), [&](int i, int j, int k) {
-        const double mass_L = mass_L_[m][pi](i, j, k);
-        const double mass = mass_L + dq_[pi](i, j, k);
-        mass_new_[pi](i, j, k) = mass;
-        f.rho_CC[pi](i, j, k) = mass / V;
-        f.vel_CC[pi](i, j, k) = (mass_L * vel_L_[m][pi](i, j, k) + dqv_[pi](i, j, k)) / mass;
+    // The net inflows (flux_divergence) of mass and momentum, summed in the row loop.
+    for (std::size_t pi = 0; pi < g.patches.size(); ++pi) {
+      const IndexRange cells = g.patches[pi].cells();
+      const int i0 = cells.lo[0], n = cells.hi[0] - i0;
+      for_each_row(cells, [&](int j, int k) {
+        const double* fx = row_ptr(flux_.at(0, pi), i0, j, k);
+        const double *fy0 = row_ptr(flux_.at(1, pi), i0, j, k), *fy1 = row_ptr(flux_.at(1, pi), i0, j + 1, k);
+        const double *fz0 = row_ptr(flux_.at(2, pi), i0, j, k), *fz1 = row_ptr(flux_.at(2, pi), i0, j, k + 1);
+        const Vec3* vx = row_ptr(flux_v_.at(0, pi), i0, j, k);
+        const Vec3 *vy0 = row_ptr(flux_v_.at(1, pi), i0, j, k), *vy1 = row_ptr(flux_v_.at(1, pi), i0, j + 1, k);
+        const Vec3 *vz0 = row_ptr(flux_v_.at(2, pi), i0, j, k), *vz1 = row_ptr(flux_v_.at(2, pi), i0, j, k + 1);
+        const double* mass_L_row = row_ptr(mass_L_[m][pi], i0, j, k);
+        const Vec3* vel_L = row_ptr(vel_L_[m][pi], i0, j, k);
+        double* mass_new = row_ptr(mass_new_[pi], i0, j, k);
+        double* rho = row_ptr(f.rho_CC[pi], i0, j, k);
+        Vec3* vel = row_ptr(f.vel_CC[pi], i0, j, k);
+        for (int c = 0; c < n; ++c) {
+          const double dq = (fx[c] - fx[c + 1]) + (fy0[c] - fy1[c]) + (fz0[c] - fz1[c]);
+          const Vec3 dqv = Vec3((vx[c] - vx[c + 1]) + (vy0[c] - vy1[c]) + (vz0[c] - vz1[c]));
+          const double mass_L = mass_L_row[c];
+          const double mass = mass_L + dq;
+          mass_new[c] = mass;
+          rho[c] = mass / V;
+          vel[c] = (mass_L * vel_L[c] + dqv) / mass;
+        }
       });
+    }
     // Temperature and specific volume, advected as the contents M T and M v (IceAdvectContent.cpp).
     advect_content(m, temp_L_[m], f.temp_CC, dt);
     advect_content(m, spv_L_[m], f.sp_vol_CC, dt);

@@ -25,6 +25,10 @@ void check_layout(const Grid& g, const PatchFields<FieldT>& pf) {
 template <class FieldT>
 void exchange_impl(const Grid& g, PatchFields<FieldT>& pf, bool nodes) {
   check_layout(g, pf);
+  // One patch and no periodic direction: every stored entry outside the
+  // patch's own box lies beyond the extra cells (owner_index is false), so
+  // there is nothing to fill.
+  if (pf.size() == 1 && g.periodic == IntVec3::Zero()) return;
   for (size_t n = 0; n < pf.size(); ++n) {
     FieldT& f = pf[n];
     const IndexRange own = f.with_extra();

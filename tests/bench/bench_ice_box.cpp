@@ -1,7 +1,9 @@
 // Benchmark (not a test): explicit ICE throughput on a 3-D ideal-gas box, in
 // cell-steps per second (interior cells x steps / wall time), for 1, 2 and 4
 // materials and 1 and 2 threads, second-order advection.
-// Run: build/bin/bench_ice_box [n=64] [steps=10] [materials=all]
+// Run: build/bin/bench_ice_box [n=64] [steps=10] [materials=all] [threads=1,2] [phases=0]
+// (materials 0 = 1, 2 and 4; threads 0 = 1 and 2; phases 1 prints the
+// PhaseTimers table of the timed steps of each run).
 // Each material fills one slab of the box along x (the others are present at
 // tiny_rho everywhere, as in Uintah), with a pressure jump between slabs so
 // that the step does real work; all walls are symmetry planes. Output: a
@@ -14,6 +16,7 @@
 #include <sstream>
 #include <string>
 
+#include "core/base/PhaseTimers.h"
 #include "core/deck/DeckLoader.h"
 #include "core/grid/Loop.h"
 #include "ice/IceComponent.h"
@@ -68,6 +71,8 @@ int main(int argc, char** argv) {
   const int steps = argc > 2 ? std::atoi(argv[2]) : 10;
   // Optional: only this material count (1, 2 or 4), e.g. for profiling.
   const int only = argc > 3 ? std::atoi(argv[3]) : 0;
+  const int only_threads = argc > 4 ? std::atoi(argv[4]) : 0;
+  const bool phases = argc > 5 && std::atoi(argv[5]) != 0;
   std::printf("ICE box %d^3, second-order advection, %d steps after one warm-up step\n", n, steps);
   // cell-steps per CPU-second (process CPU time, all threads) stays meaningful
   // when other jobs share the cores; the wall figure is the measure.
@@ -76,6 +81,7 @@ int main(int argc, char** argv) {
   for (int materials : {1, 2, 4}) {
     if (only != 0 && materials != only) continue;
     for (int threads : {1, 2}) {
+      if (only_threads != 0 && threads != only_threads) continue;
       set_thread_count(threads);
       auto deck = load_deck_from_string(box_deck(n, materials), "bench_ice_box.ups", ".");
       auto ice = make_ice_component(*deck);
@@ -84,6 +90,7 @@ int main(int argc, char** argv) {
       double dt = ice->stable_timestep();
       ice->advance(t, dt, 1);  // warm-up (first touch of the scratch fields)
       t += dt;
+      phase_timers() = PhaseTimers{};  // the table shows the timed steps only
       const auto start = std::chrono::steady_clock::now();
       const std::clock_t cpu0 = std::clock();
       for (int k = 2; k <= steps + 1; ++k) {
@@ -96,6 +103,7 @@ int main(int argc, char** argv) {
       const double rate = double(n) * n * n * steps / wall, cpu_rate = double(n) * n * n * steps / cpu;
       std::printf("%10d %8d %12.3f %18.3e %22.3e %20.3e\n", materials, threads, wall, rate, rate / threads, cpu_rate);
       std::printf("csv,%d,%d,%d,%.4f,%.4e,%.4e\n", n, materials, threads, wall, rate, cpu_rate);
+      if (phases) std::printf("%s\n", phase_timers().table(wall).c_str());
     }
   }
   return 0;
