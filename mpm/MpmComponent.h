@@ -62,6 +62,7 @@ struct MpmSetup {
   ParticleLoads loads;    // <PhysicalBC><MPM> pressure and force loads (mpm/loads/)
   std::optional<PrescribedDeformation> prescribed;  // <use_prescribed_deformation>, or none
   bool accumulate_strain_energy = false;  // the deck saves AccStrainEnergy (mpm/StrainWork.h)
+  bool node_stress = true;  // P2G sums g.stressFS (NodeGrid::node_stress); false unless the deck saves it
   bool thermal_contact = false;
   // Where and why heat conduction cannot run in this scene yet (periodic or
   // axisymmetric grids): a MissingFeature at the first step that conducts.
