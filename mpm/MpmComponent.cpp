@@ -30,7 +30,8 @@ MpmComponent::MpmComponent(MpmSetup setup) : setup_(std::move(setup)) {
     m.grid.h = g.dx;
     m.grid.n = g.cells + 2 * g.extra_cells + IntVec3::Ones();
     m.grid.extra = g.extra_cells;
-    m.grid.node_stress = setup_.node_stress;
+    // The friction contacts read g.stressFS (CoulombExchangeLoop.h): always summed with contact.
+    m.grid.node_stress = setup_.node_stress || (setup_.contact && setup_.materials.size() > 1);
     m.grid.reset();
   }
   if (!setup_.materials.empty()) periodic_ = periodic_nodes(g, setup_.materials.front().grid);
