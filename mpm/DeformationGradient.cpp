@@ -62,15 +62,23 @@ Mat3 deformation_gradient_increment(DeformationGradientAlgorithm alg, const Mat3
 }
 
 void update_deformation_gradients(DeformationGradientAlgorithm alg, int terms, double dt,
-                                  const std::vector<Mat3>& L, std::vector<Mat3>& F) {
-  const long n = long(F.size());
+                                  const std::vector<Mat3>& L, const std::vector<Mat3>& F_old,
+                                  std::vector<Mat3>& F) {
+  const long n = long(F_old.size());
+  F.resize(F_old.size());
+  // Eigen evaluates the product into a temporary, so F may alias F_old.
   if (alg == DeformationGradientAlgorithm::FirstOrder) {
 #pragma omp parallel for schedule(static) if (n >= 4096)
-    for (long i = 0; i < n; ++i) F[i] = (Mat3::Identity() + dt * L[i]) * F[i];
+    for (long i = 0; i < n; ++i) F[i] = (Mat3::Identity() + dt * L[i]) * F_old[i];
     return;
   }
 #pragma omp parallel for schedule(static) if (n >= 4096)
-  for (long i = 0; i < n; ++i) F[i] = deformation_gradient_increment(alg, dt * L[i], terms) * F[i];
+  for (long i = 0; i < n; ++i) F[i] = deformation_gradient_increment(alg, dt * L[i], terms) * F_old[i];
+}
+
+void update_deformation_gradients(DeformationGradientAlgorithm alg, int terms, double dt,
+                                  const std::vector<Mat3>& L, std::vector<Mat3>& F) {
+  update_deformation_gradients(alg, terms, dt, L, F, F);
 }
 
 }  // namespace tephra

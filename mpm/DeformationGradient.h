@@ -34,4 +34,10 @@ Mat3 deformation_gradient_increment(DeformationGradientAlgorithm alg, const Mat3
 void update_deformation_gradients(DeformationGradientAlgorithm alg, int terms, double dt,
                                   const std::vector<Mat3>& L, std::vector<Mat3>& F);
 
+// F_p = increment(dt L_p) F_old_p (the same bits as the in-place form), F sized
+// to F_old: one pass that keeps F_n for the model without copying it.
+void update_deformation_gradients(DeformationGradientAlgorithm alg, int terms, double dt,
+                                  const std::vector<Mat3>& L, const std::vector<Mat3>& F_old,
+                                  std::vector<Mat3>& F);
+
 }  // namespace tephra

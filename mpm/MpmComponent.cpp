@@ -30,6 +30,8 @@ MpmComponent::MpmComponent(MpmSetup setup) : setup_(std::move(setup)) {
     m.grid.h = g.dx;
     m.grid.n = g.cells + 2 * g.extra_cells + IntVec3::Ones();
     m.grid.extra = g.extra_cells;
+    // The friction contacts read g.stressFS (CoulombExchangeLoop.h): always summed with contact.
+    m.grid.node_stress = setup_.node_stress || (setup_.contact && setup_.materials.size() > 1);
     m.grid.reset();
   }
   if (!setup_.materials.empty()) periodic_ = periodic_nodes(g, setup_.materials.front().grid);
@@ -119,6 +121,8 @@ void MpmComponent::interpolate_to_grid(MpmMaterial& m, int step, const char* pha
                        ? compute_axisymmetric_stencils(m.particles, m.grid, m.stencils)
                        : compute_stencils(m.particles, m.grid, setup_.flags.interpolator, m.stencils);
   if (bad >= 0) fail_particle(m, std::size_t(bad), step, phase, "particle is outside the grid");
+  // The threaded scatters' particle order (compute_stencils / compute_axis_stencils build their own).
+  if (!axis_form && setup_.flags.axisymmetric) order_scatter(m.grid, m.stencils);
   m.grid.reset();
   particles_to_grid(m.particles, m.stencils, setup_.gravity, m.grid);
   fold_particle_sums(periodic_, m.grid);  // periodic aliases share the sums
@@ -398,11 +402,11 @@ void MpmComponent::advance(double t, double dt, int step) {
       else velocity_gradients(m.stencils, m.grid, m.L);
       if (musl) std::swap(m.grid.velocity_star, musl_velocity_[i]);  // G2P moves the particles with v*_g
       Particles& p = m.particles;
-      m.F_old = p.F;
+      std::swap(m.F_old, p.F);  // F_n kept as the model's input, without a copy
       // <deformation_gradient algorithm>: first_order is eq. 1.75; the series
       // approximate exp(dt l) (mpm/DeformationGradient.h).
       update_deformation_gradients(deformation_gradient_algorithm(setup_.flags.deformation_gradient),
-                                   setup_.flags.deformation_gradient_terms, dt, m.L, p.F);
+                                   setup_.flags.deformation_gradient_terms, dt, m.L, m.F_old, p.F);
       if (setup_.flags.pressure_stabilization) stabilize_pressure(m.grid, p);  // eqs. 1.82-1.84
       if (m.model->rigid()) std::fill(p.F.begin(), p.F.end(), Mat3::Identity());
     }

@@ -64,6 +64,8 @@ struct MpmSetup {
   std::optional<RotatingFrame> rotating_frame;  // <MPM><rotating_coordinate_system>, or none
   std::optional<PrescribedDeformation> prescribed;  // <use_prescribed_deformation>, or none
   bool accumulate_strain_energy = false;  // the deck saves AccStrainEnergy (mpm/StrainWork.h)
+  bool node_stress = true;  // P2G sums g.stressFS (NodeGrid::node_stress); false unless the deck saves it
+                            // (always summed with a contact model: the friction contacts read it)
   bool thermal_contact = false;
   // Where and why heat conduction cannot run in this scene yet (periodic or
   // axisymmetric grids): a MissingFeature at the first step that conducts.

@@ -248,7 +248,7 @@ void MpmComponent::load_state(const StateArchive& a) {
     bool ok = m.particles.id.size() == n;
     for_each_column(m.particles, m.grid, [&](const char* name, auto& col) {
       if (name[0] != 'g') ok = ok && col.size() == n;
-      else ok = ok && col.size() == m.grid.count();
+      else ok = ok && (col.size() == m.grid.count() || (col.empty() && std::string(name) == "g.stress"));
     });
     const std::vector<HistoryVariable> hist = m.model->history();
     m.particles.history.assign(hist.size(), {});

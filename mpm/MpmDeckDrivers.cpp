@@ -38,10 +38,13 @@ void read_loads_and_drivers(const Deck& deck, MpmSetup& setup) {
                            setup.flags.deformation_gradient + "' (implemented: first_order)");
     setup.prescribed = read_prescribed_deformation(mpm_flags.require_child("prescribed_deformation_file"));
   }
-  // AccStrainEnergy is summed every step only when the deck saves it.
+  // AccStrainEnergy is summed every step, g.stressFS in P2G, only when the deck saves it.
+  setup.node_stress = false;
   if (const DeckNode* archiver = root.child("DataArchiver"))
-    for (const DeckNode* save : archiver->children_named("save"))
+    for (const DeckNode* save : archiver->children_named("save")) {
       if (save->attribute("label") == std::optional<std::string>("AccStrainEnergy")) setup.accumulate_strain_energy = true;
+      if (save->attribute("label") == std::optional<std::string>("g.stressFS")) setup.node_stress = true;
+    }
   // Axisymmetric (mpm/Axisymmetric.h): x = r >= 0, one hoop cell in z, linear interpolation.
   if (setup.flags.axisymmetric) {
     const DeckNode& flag = root.require_child("MPM").require_child("axisymmetric");

@@ -37,9 +37,10 @@ PeriodicNodes periodic_nodes(const Grid& grid, const NodeGrid& g) {
 void fold_particle_sums(const PeriodicNodes& map, NodeGrid& g) {
   if (!map.active()) return;
   // Back to extensive sums: momentum m v and V sigma.
+  const bool stress = !g.stress.empty();  // NodeGrid::node_stress
   for (std::size_t n = 0; n < g.count(); ++n) {
     g.velocity[n] *= g.mass[n];
-    g.stress[n] *= g.volume[n];
+    if (stress) g.stress[n] *= g.volume[n];
   }
   fold(map.canonical, g.mass, 0.0);
   fold(map.canonical, g.volume, 0.0);
@@ -48,7 +49,7 @@ void fold_particle_sums(const PeriodicNodes& map, NodeGrid& g) {
   fold(map.canonical, g.external_force, Vec3::Zero().eval());
   for (std::size_t n = 0; n < g.count(); ++n) {
     if (g.mass[n] > 0.0) g.velocity[n] /= g.mass[n];
-    if (g.volume[n] > 0.0) g.stress[n] /= g.volume[n];
+    if (stress && g.volume[n] > 0.0) g.stress[n] /= g.volume[n];
   }
 }
 

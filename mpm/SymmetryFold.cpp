@@ -58,21 +58,22 @@ void fold_symmetry_particle_sums(const GridBoundaryConditions& bcs, NodeGrid& g)
   bool any = false;
   for (int f = 0; f < 6; ++f) any = any || active(bcs, g, f);
   if (!any) return;
+  const bool stress = !g.stress.empty();  // NodeGrid::node_stress
   for (std::size_t n = 0; n < g.count(); ++n) {  // extensive sums
     g.velocity[n] *= g.mass[n];
-    g.stress[n] *= g.volume[n];
+    if (stress) g.stress[n] *= g.volume[n];
   }
   for (int f = 0; f < 6; ++f) {
     if (!active(bcs, g, f)) continue;
     fold_field(g, f, g.mass);
     fold_field(g, f, g.volume);
     fold_field(g, f, g.velocity);
-    fold_field(g, f, g.stress);
+    if (stress) fold_field(g, f, g.stress);
     fold_field(g, f, g.external_force);
   }
   for (std::size_t n = 0; n < g.count(); ++n) {
     if (g.mass[n] > 0.0) g.velocity[n] /= g.mass[n];
-    if (g.volume[n] > 0.0) g.stress[n] /= g.volume[n];
+    if (stress && g.volume[n] > 0.0) g.stress[n] /= g.volume[n];
   }
 }
 

@@ -15,7 +15,7 @@ namespace tephra {
 // P2G (Alg. 5, eqs. 1.62, 1.64, 1.69), on a reset grid:
 //   m_g = sum m_p S,  V_g = sum V_p S,  v_g = (sum m_p v_p S) / m_g,
 //   f_ext,g = sum (f_ext,p + m_p b) S,  sigma_g = (sum V_p sigma_p S) / V_g.
-// Nodes with m_g = 0 keep v_g = 0.
+// Nodes with m_g = 0 keep v_g = 0. sigma_g only when g.stress is sized (NodeGrid::node_stress).
 void particles_to_grid(const Particles& p, const Stencils& s, const Vec3& body_force,
                        NodeGrid& g);
 

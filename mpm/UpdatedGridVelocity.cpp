@@ -10,14 +10,17 @@ void updated_particle_grid_velocity(const Particles& p, const Stencils& s, const
                                     const std::vector<std::size_t>* canonical, std::vector<Vec3>& out) {
   const std::size_t nodes = g.mass.size();
   out.assign(nodes, Vec3::Zero());
-  // Serial scatter: sum m_p S_gp v_p^{n+1} (the P2G kernel's order of summation per node).
+  // sum m_p S_gp v_p^{n+1}, in the scatter order of P2G (ScatterOrder.h: the
+  // same bits for any thread count).
+  Vec3* o = out.data();
+  const Vec3* acc = g.acceleration.data();
   visit_stencils(s, [&](const auto& view) {
-    for (std::size_t i = 0; i < p.size(); ++i) {
+    for_each_scatter_particle(s.order, p.size(), [&](std::size_t i) {
       Vec3 a = Vec3::Zero();
-      view.weights(i, [&](std::size_t gi, double wk) { a += wk * g.acceleration[gi]; });
+      view.weights(i, [&](std::size_t gi, double wk) { a += wk * acc[gi]; });
       const Vec3 momentum = p.mass[i] * (p.v[i] + dt * a);
-      view.weights(i, [&](std::size_t gi, double wk) { out[gi] += wk * momentum; });
-    }
+      view.weights(i, [&](std::size_t gi, double wk) { o[gi] += wk * momentum; });
+    });
   });
   if (canonical && !canonical->empty()) {
     std::vector<Vec3> sum(nodes, Vec3::Zero());
@@ -64,19 +67,25 @@ void updated_particle_grid_velocity_at(const Particles& p, const Stencils& s, co
   const std::size_t nodes = g.mass.size();
   out.assign(nodes, Vec3::Zero());
   if (std::find(needed.begin(), needed.end(), 1) == needed.end()) return;
+  // The scatter order of P2G (ScatterOrder.h), threaded; the particles whose
+  // stencil reaches no needed node are skipped.
+  Vec3* o = out.data();
+  const Vec3* acc = g.acceleration.data();
+  const unsigned char* need = needed.data();
   visit_stencils(s, [&](const auto& view) {
-    for (std::size_t i = 0; i < p.size(); ++i) {
+    for_each_scatter_particle(s.order, p.size(), [&](std::size_t i) {
       bool reaches = false;
-      view.weights(i, [&](std::size_t gi, double) { reaches = reaches || needed[gi]; });
-      if (!reaches) continue;
+      view.weights(i, [&](std::size_t gi, double) { reaches = reaches || need[gi]; });
+      if (!reaches) return;
       Vec3 a = Vec3::Zero();
-      view.weights(i, [&](std::size_t gi, double wk) { a += wk * g.acceleration[gi]; });
+      view.weights(i, [&](std::size_t gi, double wk) { a += wk * acc[gi]; });
       const Vec3 momentum = p.mass[i] * (p.v[i] + dt * a);
-      view.weights(i, [&](std::size_t gi, double wk) { out[gi] += wk * momentum; });
-    }
+      view.weights(i, [&](std::size_t gi, double wk) { o[gi] += wk * momentum; });
+    });
   });
+#pragma omp parallel for schedule(static) if (nodes >= 4096)
   for (std::size_t n = 0; n < nodes; ++n)
-    if (needed[n]) out[n] = g.mass[n] > 0.0 ? Vec3(out[n] / g.mass[n]) : Vec3::Zero();
+    if (need[n]) o[n] = g.mass[n] > 0.0 ? Vec3(o[n] / g.mass[n]) : Vec3::Zero();
 }
 
 }  // namespace tephra

@@ -49,7 +49,8 @@ std::size_t usl_needed_nodes(const NodeGrid& g, double limit, double cell_volume
 
 // v_g^{n+1} as updated_particle_grid_velocity (no periodic aliases), exact at
 // the nodes with needed[g] != 0; the other nodes hold partial sums. Only the
-// particles whose stencil reaches a needed node are summed, in particle order,
+// particles whose stencil reaches a needed node are summed, in the scatter order
+// of P2G (mpm/shape/ScatterOrder.h; particle order if the stencils have none),
 // so a needed node's sum has the same terms in the same order: the same bits.
 // With no needed node there is nothing to sum (USL everywhere).
 void updated_particle_grid_velocity_at(const Particles& p, const Stencils& s, const NodeGrid& g, double dt,

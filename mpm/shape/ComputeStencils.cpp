@@ -208,12 +208,16 @@ bool compute_axis_stencils(const Particles& p, const NodeGrid& g, const Interpol
   release(s.node);
   release(s.w);
   release(s.grad);
+  s.order.particles = 0;
+  bool ok = false;
   switch (spec.kind) {
-    case InterpolatorKind::Linear: return fill_axis<InterpolatorKind::Linear, 2>(p, g, s);
-    case InterpolatorKind::Gimp: return fill_axis<InterpolatorKind::Gimp, 3>(p, g, s);
-    case InterpolatorKind::QuadraticBspline: return fill_axis<InterpolatorKind::QuadraticBspline, 3>(p, g, s);
+    case InterpolatorKind::Linear: ok = fill_axis<InterpolatorKind::Linear, 2>(p, g, s); break;
+    case InterpolatorKind::Gimp: ok = fill_axis<InterpolatorKind::Gimp, 3>(p, g, s); break;
+    case InterpolatorKind::QuadraticBspline: ok = fill_axis<InterpolatorKind::QuadraticBspline, 3>(p, g, s); break;
     default: s.axis_nodes = 0; return false;
   }
+  if (ok) order_scatter(g, s);
+  return ok;
 }
 
 long compute_stencils(const Particles& p, const NodeGrid& g, const InterpolatorSpec& spec, Stencils& s) {
@@ -225,16 +229,59 @@ long compute_stencils(const Particles& p, const NodeGrid& g, const InterpolatorS
   s.node.resize(n);
   s.w.resize(n);
   s.grad.resize(n);
+  s.order.particles = 0;
+  long bad = -1;
   switch (spec.kind) {
-    case InterpolatorKind::Linear: return fill<InterpolatorKind::Linear>(p, g, spec, s);
-    case InterpolatorKind::Gimp: return fill<InterpolatorKind::Gimp>(p, g, spec, s);
-    case InterpolatorKind::QuadraticBspline: return fill<InterpolatorKind::QuadraticBspline>(p, g, spec, s);
-    case InterpolatorKind::Cpdi: return fill<InterpolatorKind::Cpdi>(p, g, spec, s);
-    case InterpolatorKind::CpGimp: return fill<InterpolatorKind::CpGimp>(p, g, spec, s);
-    case InterpolatorKind::Cpti: return fill<InterpolatorKind::Cpti>(p, g, spec, s);
-    case InterpolatorKind::CubicBspline: return fill<InterpolatorKind::CubicBspline>(p, g, spec, s);
+    case InterpolatorKind::Linear: bad = fill<InterpolatorKind::Linear>(p, g, spec, s); break;
+    case InterpolatorKind::Gimp: bad = fill<InterpolatorKind::Gimp>(p, g, spec, s); break;
+    case InterpolatorKind::QuadraticBspline: bad = fill<InterpolatorKind::QuadraticBspline>(p, g, spec, s); break;
+    case InterpolatorKind::Cpdi: bad = fill<InterpolatorKind::Cpdi>(p, g, spec, s); break;
+    case InterpolatorKind::CpGimp: bad = fill<InterpolatorKind::CpGimp>(p, g, spec, s); break;
+    case InterpolatorKind::Cpti: bad = fill<InterpolatorKind::Cpti>(p, g, spec, s); break;
+    case InterpolatorKind::CubicBspline: bad = fill<InterpolatorKind::CubicBspline>(p, g, spec, s); break;
   }
-  return -1;
+  if (bad < 0) order_scatter(g, s);
+  return bad;
+}
+
+void order_scatter(const NodeGrid& g, Stencils& s) {
+  const std::size_t np = s.particles();
+  const long count = static_cast<long>(np);
+  ScatterOrder& o = s.order;
+  o.particles = 0;
+  if (np == 0) return;
+  const std::size_t nx = std::size_t(g.n[0]), nxy = nx * std::size_t(g.n[1]);
+  if (s.axis_nodes) {
+    // Per-axis form: footprint N x N node rows from the base node.
+    const int N = s.axis_nodes;
+    o.prepare(np, g.n[1], g.n[2], N, N);
+#pragma omp parallel for schedule(static) if (count >= 4096)
+    for (long i = 0; i < count; ++i) {
+      const std::size_t b = s.base[std::size_t(i)];
+      o.key[std::size_t(i)] = o.block_key(int((b / nx) % std::size_t(g.n[1])), int(b / nxy));
+    }
+  } else {
+    // Flat form: the bounding rows of each particle's entries (any
+    // interpolator); the widths from the largest footprint of all particles.
+    const std::size_t W = std::size_t(s.width);
+    std::vector<int> y0(np), z0(np);
+    int span_y = 1, span_z = 1;
+#pragma omp parallel for schedule(static) reduction(max : span_y, span_z) if (count >= 4096)
+    for (long i = 0; i < count; ++i) {
+      int ylo = g.n[1], yhi = -1, zlo = g.n[2], zhi = -1;
+      for (std::size_t k = std::size_t(i) * W; k < std::size_t(i + 1) * W; ++k) {
+        const int y = int((s.node[k] / nx) % std::size_t(g.n[1])), z = int(s.node[k] / nxy);
+        ylo = std::min(ylo, y), yhi = std::max(yhi, y), zlo = std::min(zlo, z), zhi = std::max(zhi, z);
+      }
+      y0[std::size_t(i)] = ylo;
+      z0[std::size_t(i)] = zlo;
+      span_y = std::max(span_y, yhi - ylo + 1);
+      span_z = std::max(span_z, zhi - zlo + 1);
+    }
+    o.prepare(np, g.n[1], g.n[2], span_y, span_z);
+    for (std::size_t i = 0; i < np; ++i) o.key[i] = o.block_key(y0[i], z0[i]);
+  }
+  o.finish();
 }
 
 }  // namespace tephra

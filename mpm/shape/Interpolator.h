@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "core/base/Types.h"
+#include "mpm/shape/ScatterOrder.h"
 
 namespace tephra {
 
@@ -57,6 +58,9 @@ struct Stencils {
   std::size_t stride_y = 0, stride_z = 0;  // NodeGrid index steps in y and z
   std::vector<std::size_t> base;           // per particle
   std::vector<double> factors;             // per particle 6 N: S_x, S_y, S_z, G_x, G_y, G_z
+  // The particle order of the threaded scatters (ScatterOrder.h), built by
+  // compute_stencils / compute_axis_stencils / order_scatter for these stencils.
+  ScatterOrder order;
   std::size_t particles() const {
     return axis_nodes ? base.size() : width ? w.size() / width : 0;
   }
@@ -75,5 +79,11 @@ long compute_stencils(const Particles& p, const NodeGrid& g, const InterpolatorS
 // weights are the bits compute_stencils gives; the gradients differ by
 // round-off (1/h applied to the 1-D factor instead of the product).
 bool compute_axis_stencils(const Particles& p, const NodeGrid& g, const InterpolatorSpec& spec, Stencils& s);
+
+// Builds s.order (ScatterOrder.h) from the stencils' node rows: the blocks of
+// the lowest y and z node row of each particle, the widths from the largest
+// footprint. compute_stencils and compute_axis_stencils call it on success;
+// call it after any other code that fills s (e.g. the axisymmetric stencils).
+void order_scatter(const NodeGrid& g, Stencils& s);
 
 }  // namespace tephra

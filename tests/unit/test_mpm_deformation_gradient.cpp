@@ -145,3 +145,30 @@ TEST(ArtificialViscosity, EntersTheInternalForceAsMinusQIdentity) {
 
 }  // namespace
 }  // namespace tephra
+
+namespace tephra {
+namespace {
+
+// The out-of-place update F = inc(dt L) F_old (MpmComponent keeps F_n that
+// way, without a copy) is the same bits as the in-place one, every algorithm.
+TEST(MpmDeformationGradient, OutOfPlaceUpdateIsTheInPlaceBits) {
+  std::vector<Mat3> L(300), F_old(300);
+  for (std::size_t i = 0; i < L.size(); ++i) {
+    for (int r = 0; r < 3; ++r)
+      for (int c = 0; c < 3; ++c) {
+        L[i](r, c) = std::sin(1.0 + i + 3 * r + c);
+        F_old[i](r, c) = (r == c ? 1.0 : 0.0) + 0.1 * std::cos(2.0 + i + 5 * r + c);
+      }
+  }
+  for (auto alg : {DeformationGradientAlgorithm::FirstOrder, DeformationGradientAlgorithm::Subcycling,
+                   DeformationGradientAlgorithm::TaylorSeries, DeformationGradientAlgorithm::CayleyHamilton}) {
+    std::vector<Mat3> in_place = F_old, out(7, Mat3::Zero());  // wrong size on purpose: resized
+    update_deformation_gradients(alg, 4, 0.3, L, in_place);
+    update_deformation_gradients(alg, 4, 0.3, L, F_old, out);
+    EXPECT_EQ(out, in_place);
+    EXPECT_NE(out, F_old);
+  }
+}
+
+}  // namespace
+}  // namespace tephra

@@ -1,0 +1,165 @@
+// The scatter order of the threaded P2G (mpm/shape/ScatterOrder.h) for the
+// per-axis stencils (linear, gimp, 3rdorderBS) and the flat ones (gimp and
+// cpdi through compute_stencils). Claims, checked from the stencils' nodes:
+//   * index is a permutation of the particles, ascending inside each block,
+//     and every particle sits in the block of its lowest (y, z) node rows,
+//     block = (floor(y0 / w_y), floor(z0 / w_z));
+//   * w = footprint - 1 (1 for linear, 2 for gimp / 3rdorderBS, from the
+//     largest footprint for cpdi);
+//   * the invariant the threading rests on: no node is touched by two
+//     blocks of the same colour;
+//   * P2G with 1, 2 and 3 threads gives the same bits (cpdi included).
+#include <gtest/gtest.h>
+
+#include <map>
+#include <random>
+#include <set>
+
+#include "core/grid/Loop.h"
+#include "mpm/Transfers.h"
+#include "mpm/shape/AxisStencils.h"
+
+namespace tephra {
+namespace {
+
+struct Cloud {
+  NodeGrid g;
+  Particles p;
+  Cloud() {
+    g.origin = Vec3(-1.0, 0.5, 0.0);
+    g.h = Vec3(0.1, 0.2, 0.15);
+    g.n = IntVec3(14, 16, 18);
+    g.reset();
+    std::mt19937 rng(3);
+    std::uniform_real_distribution<double> u(0.0, 1.0), s(-1.0, 1.0);
+    for (int i = 0; i < 6000; ++i) {
+      // Nodes 2 .. n-3: every support (cpdi with a sheared domain included) stays on the grid.
+      const Vec3 x = g.origin + Vec3((2 + 9 * u(rng)) * g.h[0], (2 + 11 * u(rng)) * g.h[1], (2 + 13 * u(rng)) * g.h[2]);
+      Mat3 size = Mat3::Identity() * 0.5;
+      size(1, 2) = 0.4 * s(rng);  // cpdi: a sheared domain, footprints up to 4 rows
+      p.add(x, Vec3(s(rng), s(rng), s(rng)), 0.5 + u(rng), 1e-3 * (0.5 + u(rng)), 300.0, 0.0, i, size);
+      p.stress.back() = Mat3::Identity() * 1e3 * s(rng);
+    }
+  }
+};
+
+struct Threads {
+  int saved = thread_count();
+  explicit Threads(int n) { set_thread_count(n); }
+  ~Threads() { set_thread_count(saved); }
+};
+
+// Node rows (y, z) of node n.
+std::pair<int, int> rows(const NodeGrid& g, std::size_t n) {
+  return {int((n / g.n[0]) % g.n[1]), int(n / (std::size_t(g.n[0]) * g.n[1]))};
+}
+
+void check_order(const Cloud& c, const Stencils& s, int expected_w_y, int expected_w_z) {
+  const ScatterOrder& o = s.order;
+  const std::size_t np = c.p.size();
+  ASSERT_TRUE(o.built_for(np));
+  EXPECT_EQ(o.width_y, expected_w_y);
+  EXPECT_EQ(o.width_z, expected_w_z);
+  // Permutation, ascending within a block.
+  std::vector<int> seen(np, 0);
+  for (std::uint32_t i : o.index) ++seen[i];
+  for (std::size_t i = 0; i < np; ++i) ASSERT_EQ(seen[i], 1) << "particle " << i;
+  ASSERT_EQ(o.colour[0], 0u);
+  ASSERT_EQ(o.colour[4] + 1, o.block.size());
+  // node -> (colour -> blocks touching it)
+  std::map<std::size_t, std::map<int, std::set<long>>> touched;
+  visit_stencils(s, [&](const auto& view) {
+    for (int colour = 0; colour < 4; ++colour)
+      for (std::uint32_t b = o.colour[colour]; b < o.colour[colour + 1]; ++b) {
+        long block_id = -1;
+        for (std::uint32_t j = o.block[b]; j < o.block[b + 1]; ++j) {
+          const std::size_t i = o.index[j];
+          if (j > o.block[b]) ASSERT_LT(o.index[j - 1], o.index[j]);
+          int y0 = c.g.n[1], z0 = c.g.n[2];
+          view.weights(i, [&](std::size_t n, double) {
+            y0 = std::min(y0, rows(c.g, n).first);
+            z0 = std::min(z0, rows(c.g, n).second);
+          });
+          const int by = y0 / o.width_y, bz = z0 / o.width_z;
+          ASSERT_EQ(by % 2 + 2 * (bz % 2), colour);
+          const long id = long(bz) * 100000 + by;
+          if (block_id < 0) block_id = id;
+          ASSERT_EQ(id, block_id) << "all particles of a block share its (by, bz)";
+          view.weights(i, [&](std::size_t n, double) { touched[n][colour].insert(id); });
+        }
+      }
+  });
+  std::size_t shared = 0;
+  for (const auto& [n, per_colour] : touched)
+    for (const auto& [colour, blocks] : per_colour) {
+      EXPECT_EQ(blocks.size(), 1u) << "node " << n << " colour " << colour;
+      shared += blocks.size() > 1;
+    }
+  EXPECT_EQ(shared, 0u);
+}
+
+NodeGrid p2g(const Cloud& c, const Stencils& s, int threads) {
+  Threads t(threads);
+  NodeGrid g = c.g;
+  particles_to_grid(c.p, s, Vec3(0.0, 0.0, -9.81), g);
+  compute_internal_force(c.p, s, g);
+  return g;
+}
+
+void check_threads(const Cloud& c, const Stencils& s) {
+  const NodeGrid g1 = p2g(c, s, 1), g2 = p2g(c, s, 2), g3 = p2g(c, s, 3);
+  for (const NodeGrid* g : {&g2, &g3}) {
+    EXPECT_EQ(g1.mass, g->mass);
+    EXPECT_EQ(g1.volume, g->volume);
+    EXPECT_EQ(g1.velocity, g->velocity);
+    EXPECT_EQ(g1.external_force, g->external_force);
+    EXPECT_EQ(g1.stress, g->stress);
+    EXPECT_EQ(g1.internal_force, g->internal_force);
+  }
+}
+
+TEST(MpmScatterOrder, AxisStencils) {
+  const Cloud c;
+  for (auto [kind, w] : {std::pair{InterpolatorKind::Linear, 1}, std::pair{InterpolatorKind::Gimp, 2},
+                         std::pair{InterpolatorKind::QuadraticBspline, 2}}) {
+    SCOPED_TRACE(interpolator_name(kind));
+    Stencils s;
+    ASSERT_TRUE(compute_axis_stencils(c.p, c.g, {kind, 1e10}, s));
+    check_order(c, s, w, w);
+    check_threads(c, s);
+  }
+}
+
+TEST(MpmScatterOrder, FlatStencils) {
+  const Cloud c;
+  {
+    SCOPED_TRACE("gimp");
+    Stencils s;
+    ASSERT_EQ(compute_stencils(c.p, c.g, {InterpolatorKind::Gimp, 1e10}, s), -1);
+    check_order(c, s, 2, 2);
+    check_threads(c, s);
+  }
+  {
+    SCOPED_TRACE("cpdi");
+    Stencils s;
+    ASSERT_EQ(compute_stencils(c.p, c.g, {InterpolatorKind::Cpdi, 1e10}, s), -1);
+    // The largest footprint over the particles, from the entries themselves.
+    int span_y = 1, span_z = 1;
+    const std::size_t W = s.width;
+    for (std::size_t i = 0; i < c.p.size(); ++i) {
+      int ylo = 1 << 30, yhi = -1, zlo = 1 << 30, zhi = -1;
+      for (std::size_t k = i * W; k < (i + 1) * W; ++k) {
+        const auto [y, z] = rows(c.g, s.node[k]);
+        ylo = std::min(ylo, y), yhi = std::max(yhi, y), zlo = std::min(zlo, z), zhi = std::max(zhi, z);
+      }
+      span_y = std::max(span_y, yhi - ylo + 1);
+      span_z = std::max(span_z, zhi - zlo + 1);
+    }
+    EXPECT_GE(span_y, 3);  // the sheared domains reach beyond the gimp footprint
+    check_order(c, s, span_y - 1, span_z - 1);
+    check_threads(c, s);
+  }
+}
+
+}  // namespace
+}  // namespace tephra
