@@ -38,18 +38,45 @@
 #include "core/grid/Loop.h"
 #include "ice/IceAdvection.h"
 #include "ice/IceComponent.h"
+#include "ice/RowLoop.h"
 
 namespace tephra {
+namespace {
+
+// out = (base + net inflow of the face fluxes F) / mass_new over the interior
+// cells, one row at a time; the net inflow is flux_divergence's expression
+// (x, then y, then z differences), so the bits are those of
+// flux_divergence followed by a cell loop.
+template <class Base>
+void update_from_fluxes(const Grid& g, const FaceScalars& F, Base&& base, const CellScalars& mass_new,
+                        CellScalars& out) {
+  for (std::size_t pi = 0; pi < g.patches.size(); ++pi) {
+    const IndexRange cells = g.patches[pi].cells();
+    const int i0 = cells.lo[0], n = cells.hi[0] - i0;
+    for_each_row(cells, [&](int j, int k) {
+      const double* fx = row_ptr(F.at(0, pi), i0, j, k);
+      const double *fy0 = row_ptr(F.at(1, pi), i0, j, k), *fy1 = row_ptr(F.at(1, pi), i0, j + 1, k);
+      const double *fz0 = row_ptr(F.at(2, pi), i0, j, k), *fz1 = row_ptr(F.at(2, pi), i0, j, k + 1);
+      const double* m_new = row_ptr(mass_new[pi], i0, j, k);
+      double* o = row_ptr(out[pi], i0, j, k);
+      for (int c = 0; c < n; ++c) {
+        const double dq = (fx[c] - fx[c + 1]) + (fy0[c] - fy1[c]) + (fz0[c] - fz1[c]);
+        o[c] = (base(pi, i0 + c, j, k) + dq) / m_new[c];
+      }
+    });
+  }
+}
+
+}  // namespace
 
 void IceComponent::advect_content(std::size_t m, const CellScalars& psi_L, CellScalars& out, double dt) {
   const Grid& g = setup_.grid;
   if (mats_.size() > 1) {  // compatible fluxes F_M psi_slab (flux_ holds m's mass fluxes)
     specific_fluxes(g, setup_.advection, psi_L, mats_[m].vel_FCME, flux_, dt, flux2_);
-    flux_divergence(g, flux2_, dq_);
-    for (std::size_t pi = 0; pi < g.patches.size(); ++pi)
-      for_each_cell(g.patches[pi].cells(), [&](int i, int j, int k) {
-        out[pi](i, j, k) = (mass_L_[m][pi](i, j, k) * psi_L[pi](i, j, k) + dq_[pi](i, j, k)) / mass_new_[pi](i, j, k);
-      });
+    const CellScalars& mass_L = mass_L_[m];
+    update_from_fluxes(g, flux2_, [&](std::size_t pi, int i, int j, int k) {
+      return mass_L[pi](i, j, k) * psi_L[pi](i, j, k);
+    }, mass_new_, out);
     return;
   }
   for (std::size_t pi = 0; pi < g.patches.size(); ++pi) {
@@ -60,11 +87,8 @@ void IceComponent::advect_content(std::size_t m, const CellScalars& psi_L, CellS
     for (std::size_t c = 0; c < n; ++c) q[c] = mass[c] * psi[c];  // all storage: interior, extra cells, ghosts
   }
   density_fluxes(g, setup_.advection, content_, mats_[m].vel_FCME, dt, flux2_);
-  flux_divergence(g, flux2_, dq_);
-  for (std::size_t pi = 0; pi < g.patches.size(); ++pi)
-    for_each_cell(g.patches[pi].cells(), [&](int i, int j, int k) {
-      out[pi](i, j, k) = (content_[pi](i, j, k) + dq_[pi](i, j, k)) / mass_new_[pi](i, j, k);
-    });
+  update_from_fluxes(g, flux2_, [&](std::size_t pi, int i, int j, int k) { return content_[pi](i, j, k); },
+                     mass_new_, out);
 }
 
 }  // namespace tephra
