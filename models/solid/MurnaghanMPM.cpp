@@ -10,39 +10,21 @@
 
 namespace tephra {
 
-double murnaghan_pressure(double J, const MurnaghanParams& p) {
-  return (p.K / p.Kprime) * std::expm1(-p.Kprime * std::log(J));
-}
+// Eq. 3.11 is the power-law fluid p = a (J^{-g} - 1) with a = K/K', g = K' (ViscousFluid.h).
+double murnaghan_pressure(double J, const MurnaghanParams& p) { return power_law_pressure(J, p.K / p.Kprime, p.Kprime); }
 
 long MurnaghanMPM::update(const SolidUpdateInput& in, const SolidUpdateOutput& out) const {
-  const Eigen::Matrix3d I = Eigen::Matrix3d::Identity();
-  return for_each_point(in.F_new.size(), [&](size_t i) {
-    const double J = in.F_new[i].determinant();
-    if (!(J > 0.0) || !std::isfinite(J)) return false;
-    const double p = murnaghan_pressure(J, p_);
-    const Eigen::Matrix3d tau = viscous_shear_stress(in.L[i], p_.viscosity);
-    out.stress[i] = -p * I + tau;  // eq. 3.9
-    out.energy_density[i] = power_law_energy(J, p_.K / p_.Kprime, p_.Kprime);
-    out.wave_speed[i] = std::sqrt(p_.K * std::pow(J, -(p_.Kprime + 1.0)) * J / in.density0);
-    out.plastic_work[i] = p_.viscosity > 0.0 ? J * tau.squaredNorm() / (2.0 * p_.viscosity) * in.dt : 0.0;
-    out.heating[i] = 0.0;  // Vaango: pdTdt = 0
-    return out.stress[i].allFinite();
-  });
+  return update_power_law_fluid(in, out, p_.K / p_.Kprime, p_.Kprime, p_.viscosity);  // eqs. 3.9-3.11
 }
 
+// Eq. 3.11 at J = rho0/rho on both sides of rho0 (the MPM stress's pressure);
+// the inverse x = (1 + K' p / K)^{1/K'} is NaN for p <= -K/K'.
 std::optional<SolidEosPoint> MurnaghanMPM::pressure_at_density(double rho, double density0, double) const {
-  // Eq. 3.11 at J = rho0/rho on both sides of rho0 (the MPM stress's pressure).
-  SolidEosPoint e;
-  const double lnx = std::log(rho / density0);
-  e.pressure = (p_.K / p_.Kprime) * std::expm1(p_.Kprime * lnx);
-  e.dp_drho = (p_.K / density0) * std::exp((p_.Kprime - 1.0) * lnx);
-  e.c2 = e.dp_drho;
-  return e;
+  return power_law_eos_point(rho, density0, p_.K / p_.Kprime, p_.Kprime);
 }
 
 std::optional<double> MurnaghanMPM::density_at_pressure(double p_gauge, double density0, double) const {
-  // x = (1 + K' p / K)^{1/K'}; NaN for p < -K/K' (no density gives such a tension).
-  return density0 * std::exp(std::log1p(p_.Kprime * p_gauge / p_.K) / p_.Kprime);
+  return power_law_density(p_gauge, density0, p_.K / p_.Kprime, p_.Kprime);
 }
 
 ConstitutiveModelP MurnaghanMPM::create(const ModelParameters& params) {

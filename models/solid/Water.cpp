@@ -11,38 +11,18 @@
 
 namespace tephra {
 
-double water_pressure(double J, const WaterParams& p) { return p.kappa * std::expm1(-p.gamma * std::log(J)); }
+double water_pressure(double J, const WaterParams& p) { return power_law_pressure(J, p.kappa, p.gamma); }
 
 long Water::update(const SolidUpdateInput& in, const SolidUpdateOutput& out) const {
-  const Eigen::Matrix3d I = Eigen::Matrix3d::Identity();
-  return for_each_point(in.F_new.size(), [&](size_t i) {
-    const double J = in.F_new[i].determinant();
-    if (!(J > 0.0) || !std::isfinite(J)) return false;
-    const double p = water_pressure(J, p_);
-    const Eigen::Matrix3d tau = viscous_shear_stress(in.L[i], p_.viscosity);
-    out.stress[i] = -p * I + tau;  // eq. 3.6
-    out.energy_density[i] = power_law_energy(J, p_.kappa, p_.gamma);
-    out.wave_speed[i] = std::sqrt(p_.gamma * p_.kappa * std::pow(J, -p_.gamma) * J / in.density0);
-    // Viscous dissipation of the step per reference volume: J (tau : d) dt, tau : d = tau : eta >= 0.
-    out.plastic_work[i] = p_.viscosity > 0.0 ? J * tau.squaredNorm() / (2.0 * p_.viscosity) * in.dt : 0.0;
-    out.heating[i] = 0.0;  // Vaango: pdTdt = 0
-    return out.stress[i].allFinite();
-  });
+  return update_power_law_fluid(in, out, p_.kappa, p_.gamma, p_.viscosity);  // eqs. 3.6-3.8
 }
 
 std::optional<SolidEosPoint> Water::pressure_at_density(double rho, double density0, double) const {
-  SolidEosPoint e;
-  const double x = rho / density0;
-  e.pressure = p_.kappa * std::expm1(p_.gamma * std::log(x));
-  e.dp_drho = p_.gamma * p_.kappa * std::pow(x, p_.gamma - 1.0) / density0;
-  e.c2 = e.dp_drho;
-  return e;
+  return power_law_eos_point(rho, density0, p_.kappa, p_.gamma);
 }
 
 std::optional<double> Water::density_at_pressure(double p_gauge, double density0, double) const {
-  const double q = p_gauge / p_.kappa;
-  if (!(q > -1.0)) return std::numeric_limits<double>::quiet_NaN();
-  return density0 * std::exp(std::log1p(q) / p_.gamma);
+  return power_law_density(p_gauge, density0, p_.kappa, p_.gamma);
 }
 
 ConstitutiveModelP Water::create(const ModelParameters& params) {

@@ -96,10 +96,15 @@ void parse_surface(const DeckNode& geom_object, PressureSurface& s) {
 
 }  // namespace
 
-LoadCurve<double> parse_scalar_load_curve(const DeckNode& parent) {
+namespace {
+
+// <load_curve> id and strictly increasing <time_point> (time, load) rows;
+// read_load gives one load value (a double or a [x, y, z] vector).
+template <class T, class ReadLoad>
+LoadCurve<T> parse_load_curve(const DeckNode& parent, ReadLoad read_load) {
   const DeckNode& lc = parent.require_child("load_curve");
   require_known(lc, {"id", "time_point"});
-  LoadCurve<double> c;
+  LoadCurve<T> c;
   c.id = lc.get_int("id");
   for (const DeckNode* tp : lc.children_named("time_point")) {
     require_known(*tp, {"time", "load"});
@@ -107,27 +112,20 @@ LoadCurve<double> parse_scalar_load_curve(const DeckNode& parent) {
     if (!c.time.empty() && !(t > c.time.back()))
       tp->require_child("time").fail("load curve times must increase strictly");
     c.time.push_back(t);
-    c.load.push_back(tp->get_double("load"));
+    c.load.push_back(read_load(*tp));
   }
   if (c.time.empty()) lc.fail("a <load_curve> needs at least one <time_point>");
   return c;
 }
 
+}  // namespace
+
+LoadCurve<double> parse_scalar_load_curve(const DeckNode& parent) {
+  return parse_load_curve<double>(parent, [](const DeckNode& tp) { return tp.get_double("load"); });
+}
+
 LoadCurve<Vec3> parse_vector_load_curve(const DeckNode& parent) {
-  const DeckNode& lc = parent.require_child("load_curve");
-  require_known(lc, {"id", "time_point"});
-  LoadCurve<Vec3> c;
-  c.id = lc.get_int("id");
-  for (const DeckNode* tp : lc.children_named("time_point")) {
-    require_known(*tp, {"time", "load"});
-    const double t = tp->get_double("time");
-    if (!c.time.empty() && !(t > c.time.back()))
-      tp->require_child("time").fail("load curve times must increase strictly");
-    c.time.push_back(t);
-    c.load.push_back(tp->get_vec3("load"));
-  }
-  if (c.time.empty()) lc.fail("a <load_curve> needs at least one <time_point>");
-  return c;
+  return parse_load_curve<Vec3>(parent, [](const DeckNode& tp) { return tp.get_vec3("load"); });
 }
 
 std::vector<int> velocity_surface_of_particles(const ParticleLoads& loads, const Vec3& h, const Particles& p) {

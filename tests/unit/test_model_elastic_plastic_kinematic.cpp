@@ -2,7 +2,8 @@
 // laws: Prager eq. 11.2, Armstrong-Frederick eq. 11.3; von Mises on xi = s - beta) against
 // the closed forms of the uniaxial-strain path F = diag(lambda, 1, 1), eps = ln lambda (the
 // hypoelastic log strain), perfect plasticity sigma_y = s0 (linear flow, K = 0), isothermal,
-// no thermal expansion (the same oracles as test_model_elastic_plastic_hp_kinematic).
+// no thermal expansion. The closed-form tests run for both metal models that compose kinematic
+// hardening, elastic_plastic (ch. 18) and elastic_plastic_hp (ch. 17) (KinematicClosedForm below).
 //
 // Along this path every deviator is proportional to diag(1, -1/2, -1/2), so with
 // e the (signed) axial plastic strain, eps^p = e diag(1, -1/2, -1/2), ||d eps^p|| = sqrt(3/2)|de|:
@@ -18,6 +19,7 @@
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
+#include <string>
 
 #include <gtest/gtest.h>
 
@@ -30,28 +32,39 @@ namespace {
 using test::MapModelParameters;
 
 constexpr double kK = 117e9, kG = 43.8e9, kS0 = 70e6;  // copper-tube values of the inventory (ch. 17)
-constexpr int kBeta = 6;                                // history column of backStress (after the 6 scalars)
+// A metal model with kinematic hardening: where its backStress history column sits.
+struct Variant {
+  const char* model;
+  int beta_column;           // backStress after the model's scalar history columns
+  std::size_t history_size;
+};
+constexpr Variant kElasticPlastic{"elastic_plastic", 6, 7};
+constexpr Variant kElasticPlasticHP{"elastic_plastic_hp", 5, 6};
+constexpr int kBeta = kElasticPlastic.beta_column;  // for the elastic_plastic-only tests
 
-MapModelParameters base() {
-  MapModelParameters p({{"bulk_modulus", kK}, {"shear_modulus", kG}, {"isothermal", 1.0}, {"coeff_thermal_expansion", 0.0}});
+MapModelParameters base(const Variant& v = kElasticPlastic) {
+  MapModelParameters p({{"bulk_modulus", kK}, {"shear_modulus", kG}, {"isothermal", 1.0}});
+  if (std::string(v.model) == "elastic_plastic") p.values["coeff_thermal_expansion"] = 0.0;
   p.add_block("yield_condition", "von_mises");
   p.add_block("flow_model", "linear", {{"sigma_0", kS0}, {"K", 0.0}});
   p.enclosing = {{"melt_temp", 1356.0}, {"specific_heat", 414.0}};
   return p;
 }
 
-ConstitutiveModelP prager(double H) {
-  auto p = base();
+ConstitutiveModelP prager(double H, const Variant& v = kElasticPlastic) {
+  auto p = base(v);
   p.add_block("kinematic_hardening_model", "prager", {{"beta", 1.0}, {"hardening_modulus", H}});
-  return create_constitutive_model("elastic_plastic", p);
+  return create_constitutive_model(v.model, p);
 }
 
-ConstitutiveModelP armstrong_frederick(double H1, double H2) {
-  auto p = base();
+ConstitutiveModelP armstrong_frederick(double H1, double H2, const Variant& v) {
+  auto p = base(v);
   p.add_block("kinematic_hardening_model", "armstrong_frederick",
               {{"beta", 1.0}, {"hardening_modulus_1", H1}, {"hardening_modulus_2", H2}});
-  return create_constitutive_model("elastic_plastic", p);
+  return create_constitutive_model(v.model, p);
 }
+
+class KinematicClosedForm : public ::testing::TestWithParam<Variant> {};
 
 Eigen::Matrix3d stretch(double eps) {
   Eigen::Matrix3d F = Eigen::Matrix3d::Identity();
@@ -65,11 +78,13 @@ double sigma_diff(const test::PointState& s) { return s.stress(0, 0) - s.stress(
 // piecewise closed form above at every step, the backstress 2/3 H e, and the
 // reverse yield point Σ_rev = Σ_f - 2 s0. Exact up to round-off and the O(h^3)
 // midpoint kinematics (the return is exact for linear hardening on a proportional path).
-TEST(ElasticPlasticKinematic, PragerUniaxialBauschingerClosedForm) {
+TEST_P(KinematicClosedForm, PragerUniaxialBauschinger) {
+  const Variant& v = GetParam();
+  const int kBeta = v.beta_column;
   const double H = 2.0e10;
-  const auto m = prager(H);
+  const auto m = prager(H, v);
   ASSERT_TRUE(m);
-  ASSERT_EQ(m->history().size(), 7u);
+  ASSERT_EQ(m->history().size(), v.history_size);
   EXPECT_EQ(m->history()[kBeta].name, "backStress");
   test::PointState s(*m);
   const int n = 400;
@@ -117,10 +132,12 @@ TEST(ElasticPlasticKinematic, PragerUniaxialBauschingerClosedForm) {
 // closed form (backward Euler in the model: first order, so the error halves when the
 // steps are halved), Σ = s0 + 3/2 β_11 on the yield surface, and saturation A → H1/γ
 // (the backward-Euler fixed point is the exact saturation value).
-TEST(ElasticPlasticKinematic, ArmstrongFrederickSaturationClosedForm) {
+TEST_P(KinematicClosedForm, ArmstrongFrederickSaturation) {
+  const Variant& v = GetParam();
+  const int kBeta = v.beta_column;
   const double H1 = 2.0e10, H2 = 1000.0 / std::sqrt(1.5);  // γ = sqrt(3/2) H2 = 1000
   const double gamma = std::sqrt(1.5) * H2, A_sat = H1 / gamma;
-  const auto m = armstrong_frederick(H1, H2);
+  const auto m = armstrong_frederick(H1, H2, v);
   ASSERT_TRUE(m);
   auto max_error_at = [&](int n, double eps_end, double* sat_error) {
     test::PointState s(*m);
@@ -148,6 +165,9 @@ TEST(ElasticPlasticKinematic, ArmstrongFrederickSaturationClosedForm) {
   std::printf("AF: max |beta11 error| %.4e (200 steps) %.4e (400 steps) ratio %.3f; A_sat %.6e, A - A_sat %.3e\n", e1,
               e2, e1 / e2, A_sat, sat);
 }
+
+INSTANTIATE_TEST_SUITE_P(MetalModels, KinematicClosedForm, ::testing::Values(kElasticPlastic, kElasticPlasticHP),
+                         [](const ::testing::TestParamInfo<Variant>& i) { return std::string(i.param.model); });
 
 // With adiabatic heating and a temperature-dependent flow stress, the backstress return keeps
 // its closed-form identities at every plastic step (VT 18.52-18.55 at convergence):
