@@ -36,8 +36,8 @@ IceComponent::IceComponent(IceSetup setup) : setup_(std::move(setup)) {}
 // equilibration below; the decks' <pressure> values are not used, as in
 // Uintah, decks README "quirks").
 void IceComponent::initialize() {
+  lay_out_patches();
   const Grid& g = setup_.grid;
-  halo_ = std::make_unique<LocalHaloExchange>(g);
   const std::size_t nm = setup_.materials.size();
   mats_.clear();
   for (std::size_t m = 0; m < nm; ++m) mats_.emplace_back(g, kGhosts);
@@ -65,7 +65,7 @@ void IceComponent::initialize() {
   heat_ = CellScalars(g, kGhosts);
   temp_bc_ = CellScalars(g, kGhosts);
   if (setup_.implicit.enabled) {
-    pressure_solver_ = std::make_unique<PressureSolver>(g, setup_.implicit.hypre);
+    pressure_solver_ = std::make_unique<PressureSolver>(g, setup_.implicit.hypre, layout_.distributed);
     for (CellScalars& a : stencil_) a = CellScalars(g, kGhosts);
     rhs_ = CellScalars(g, kGhosts);
     delta_p_ = CellScalars(g, kGhosts);
@@ -78,6 +78,8 @@ void IceComponent::initialize() {
       f.vol_frac_CC.fill(0.0);
       f.vel_CC.fill(Vec3::Zero());
       f.mom_source_CC.fill(Vec3::Zero());
+      f.mom_L_ME_CC.fill(Vec3::Zero());  // checkpointed with its ghosts: no undefined entries
+      f.mom_L_CC.fill(Vec3::Zero());     // written with its extra cells, which no step sets
       continue;
     }
     // Ghost entries outside the domain stay at harmless values.
@@ -88,6 +90,8 @@ void IceComponent::initialize() {
     f.vol_frac_CC.fill(1.0);
     f.vel_CC.fill(Vec3::Zero());
     f.mom_source_CC.fill(Vec3::Zero());
+    f.mom_L_ME_CC.fill(Vec3::Zero());  // checkpointed with its ghosts: no undefined entries
+    f.mom_L_CC.fill(Vec3::Zero());     // written with its extra cells, which no step sets
     for (std::size_t pi = 0; pi < g.patches.size(); ++pi) {
       for_each_cell(g.patches[pi].cells_with_extra(), [&](int i, int j, int k) {
         std::vector<int> count(spec.sources.size(), 0);
@@ -286,7 +290,7 @@ double IceComponent::stable_timestep() const {
         if (D > 0) dt = std::min(dt, 0.5 / (D * inv_dx2));
       });
   }
-  return dt;
+  return layout_.min(dt);  // the same on every rank (a minimum is exact in any order)
 }
 
 // One explicit ICE step (Vaango theory manual ch. 26 step list, pure-fluid
@@ -368,7 +372,7 @@ void IceComponent::apply_state_bcs(std::size_t m) {
 
 // A NaN, a non-positive density, temperature or specific volume stops the
 // run (exit 4) naming the material, the cell and the step.
-void IceComponent::check_state(int step, const char* phase) const {
+void IceComponent::check_state_here(int step, const char* phase) const {
   const Grid& g = setup_.grid;
   for (std::size_t m = 0; m < mats_.size(); ++m) {
     const IceMaterialFields& f = mats_[m];

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/grid/HaloExchange.h"
+#include "core/parallel/PatchLayout.h"
 #include "core/sim/Component.h"
 #include "ice/IceFields.h"
 #include "ice/IceSetup.h"
@@ -35,7 +36,16 @@ class IceComponent final : public Component {
   void load_state(const StateArchive& archive) override;
 
   const IceSetup& setup() const { return setup_; }
+  // The patches this process holds (all of them in one process; under
+  // mpirun the rank's own, ids = level indices). fields()[m].rho_CC[n]
+  // belongs to grid().patches[n].
   const Grid& grid() const { return setup_.grid; }
+  // MPI ranks (IceRanks.cpp): the whole level, the patch owners, the
+  // reductions. Under mpirun the patches are cut over the ranks at
+  // initialize(); keep_whole_level() before initialize() keeps them all in
+  // this process with no messages (the 1-rank reference of the MPI tests).
+  const PatchLayout& layout() const { return layout_; }
+  void keep_whole_level() { keep_whole_level_ = true; }
   const std::vector<IceMaterialFields>& fields() const { return mats_; }
   const CellScalars& press_CC() const { return press_CC_; }
   const CellScalars& press_equil_CC() const { return press_equil_CC_; }
@@ -125,9 +135,13 @@ class IceComponent final : public Component {
   void lodi_pressure_bc(std::size_t pi, CellScalars& press);
   void lodi_lagrangian_bc(std::size_t m, std::size_t pi);
   void lodi_state_bc(std::size_t m, std::size_t pi);
-  void check_state(int step, const char* phase) const;
+  void check_state(int step, const char* phase) const;  // all ranks throw if one finds a bad cell
+  void check_state_here(int step, const char* phase) const;
+  void lay_out_patches();  // IceRanks.cpp: layout_, the own-patch grid, the halo exchange
 
   IceSetup setup_;
+  PatchLayout layout_;
+  bool keep_whole_level_ = false, laid_out_ = false;
   std::unique_ptr<HaloExchange> halo_;
   std::vector<IceMaterialFields> mats_;
   CellScalars press_CC_, press_equil_CC_, delP_Dilatate_, sum_rho_CC_;

@@ -17,74 +17,107 @@ const char* const kCellLabels[] = {"press_CC",      "press_equil_CC", "delP_Dila
 const char* const kFaceLabels[] = {"uvel_FC", "vvel_FC", "wvel_FC", "uvel_FCME", "vvel_FCME", "wvel_FCME"};
 const char* const kReductionLabels[] = {"KineticEnergy", "TotalMass", "TotalIntEng", "TotalMomentum"};
 
-// The cells of the whole grid with the extra cells, i fastest (OutputFrame.h).
+// Values of one patch over `r`, i fastest, `comps` doubles per entry.
+template <class A>
+std::vector<double> pack(const A& a, const IndexRange& r, int comps) {
+  std::vector<double> out;
+  out.reserve(static_cast<std::size_t>(r.size()) * comps);
+  for (int k = r.lo[2]; k < r.hi[2]; ++k)
+    for (int j = r.lo[1]; j < r.hi[1]; ++j)
+      for (int i = r.lo[0]; i < r.hi[0]; ++i) {
+        const double* v = reinterpret_cast<const double*>(&a(i, j, k));
+        out.insert(out.end(), v, v + comps);
+      }
+  return out;
+}
+
+// The cells of the whole level with the extra cells, i fastest (OutputFrame.h).
+// Each patch's cells_with_extra() block comes from the process that holds it
+// (layout.gather_blocks) and is written in level patch order, so every rank
+// count writes the same array.
 template <class T>
-FieldArray gather(const Grid& g, const PatchFields<CellField<T>>& f, const std::string& label, int material) {
+FieldArray gather(const PatchLayout& layout, const PatchFields<CellField<T>>& f, const std::string& label,
+                  int material) {
+  const Grid& g = layout.level;
   FieldArray out;
   out.label = label;
   out.material = material;
   out.components = std::is_same_v<T, double> ? 1 : 3;
+  const int nc = out.components;
   const IndexRange all = g.cells_with_extra();
   const IntVec3 n = all.extent();
-  out.values.assign(static_cast<std::size_t>(all.size()) * out.components, 0.0);
-  for (std::size_t pi = 0; pi < g.patches.size(); ++pi) {
-    const IndexRange r = g.patches[pi].cells_with_extra();
+  out.values.assign(static_cast<std::size_t>(all.size()) * nc, 0.0);
+  std::vector<std::vector<double>> own;
+  for (std::size_t pi = 0; pi < f.size(); ++pi)
+    own.push_back(pack(f[pi], g.patches[static_cast<std::size_t>(f.patch_index(pi))].cells_with_extra(), nc));
+  const std::vector<std::vector<double>> blocks = layout.gather_blocks(own);
+  for (std::size_t p = 0; p < g.patches.size(); ++p) {
+    const IndexRange r = g.patches[p].cells_with_extra();
+    const double* v = blocks[p].data();
     for (int k = r.lo[2]; k < r.hi[2]; ++k)
       for (int j = r.lo[1]; j < r.hi[1]; ++j)
         for (int i = r.lo[0]; i < r.hi[0]; ++i) {
           const std::size_t idx = static_cast<std::size_t>((i - all.lo[0]) + n[0] * ((j - all.lo[1]) + n[1] * (k - all.lo[2])));
-          if constexpr (std::is_same_v<T, double>) {
-            out.values[idx] = f[pi](i, j, k);
-          } else {
-            for (int c = 0; c < 3; ++c) out.values[3 * idx + c] = f[pi](i, j, k)[c];
-          }
+          for (int c = 0; c < nc; ++c) out.values[nc * idx + c] = *v++;
         }
   }
   return out;
 }
 
-// The faces normal to d of the interior cells, i fastest: extent cells + e_d.
-FieldArray gather_faces(const Grid& g, const FaceScalars& f, int d, const std::string& label, int material) {
+// The faces normal to d of the interior cells, i fastest: extent cells + e_d
+// (a face two patches share is written by the later one, as in one process).
+FieldArray gather_faces(const PatchLayout& layout, const FaceScalars& f, int d, const std::string& label,
+                        int material) {
+  const Grid& g = layout.level;
   FieldArray out;
   out.label = label;
   out.material = material;
   const IntVec3 n = g.cells + IntVec3::Unit(d);
   out.values.assign(static_cast<std::size_t>(n.prod()), 0.0);
-  for (std::size_t pi = 0; pi < g.patches.size(); ++pi) {
-    const Patch& p = g.patches[pi];
-    const IntVec3 hi = p.hi + IntVec3::Unit(d);
-    const GridArray<double>& a = f.at(d, pi);
-    for (int k = p.lo[2]; k < hi[2]; ++k)
-      for (int j = p.lo[1]; j < hi[1]; ++j)
-        for (int i = p.lo[0]; i < hi[0]; ++i)
-          out.values[static_cast<std::size_t>(i + n[0] * (j + n[1] * k))] = a(i, j, k);
+  auto faces = [&](const Patch& p) { return IndexRange{p.lo, p.hi + IntVec3::Unit(d)}; };
+  std::vector<std::vector<double>> own;
+  for (std::size_t pi = 0; pi < f.x.size(); ++pi)
+    own.push_back(pack(f.at(d, pi), faces(g.patches[static_cast<std::size_t>(f.x.patch_index(pi))]), 1));
+  const std::vector<std::vector<double>> blocks = layout.gather_blocks(own);
+  for (std::size_t p = 0; p < g.patches.size(); ++p) {
+    const IndexRange r = faces(g.patches[p]);
+    const double* v = blocks[p].data();
+    for (int k = r.lo[2]; k < r.hi[2]; ++k)
+      for (int j = r.lo[1]; j < r.hi[1]; ++j)
+        for (int i = r.lo[0]; i < r.hi[0]; ++i) out.values[static_cast<std::size_t>(i + n[0] * (j + n[1] * k))] = *v++;
   }
   return out;
 }
 
-// Every stored entry (ghosts too) of a field, for the restart state.
+// Every stored entry (ghosts too) of a field, for the restart state: the
+// patches' storage concatenated in level patch order, whichever process holds
+// them, so a checkpoint does not depend on the rank count.
 template <class T>
-std::vector<double> flatten(const PatchFields<CellField<T>>& f) {
-  std::vector<double> out;
+std::vector<double> flatten(const PatchLayout& layout, const PatchFields<CellField<T>>& f) {
+  std::vector<std::vector<double>> own;
   for (const auto& a : f) {
     const double* d = reinterpret_cast<const double*>(a.data());
-    out.insert(out.end(), d, d + a.size() * (sizeof(T) / sizeof(double)));
+    own.emplace_back(d, d + a.size() * (sizeof(T) / sizeof(double)));
   }
+  std::vector<double> out;
+  for (const std::vector<double>& b : layout.gather_blocks(own)) out.insert(out.end(), b.begin(), b.end());
   return out;
 }
 
+// Reads this process's patches out of a flatten()ed array: each level patch's
+// storage size is that of a field of the same ghost width on it.
 template <class T>
-void restore(const StateArchive& ar, const std::string& name, PatchFields<CellField<T>>& f) {
+void restore(const PatchLayout& layout, const StateArchive& ar, const std::string& name, PatchFields<CellField<T>>& f) {
   const std::vector<double>& v = ar.doubles(name);
-  std::size_t total = 0;
-  for (const auto& a : f) total += a.size() * (sizeof(T) / sizeof(double));
-  if (v.size() != total) throw RuntimeFailure("checkpoint array '" + name + "' has a bad size");
-  std::size_t pos = 0;
-  for (auto& a : f) {
-    double* d = reinterpret_cast<double*>(a.data());
-    const std::size_t n = a.size() * (sizeof(T) / sizeof(double));
-    std::copy(v.begin() + static_cast<long>(pos), v.begin() + static_cast<long>(pos + n), d);
-    pos += n;
+  const std::size_t per = sizeof(T) / sizeof(double);
+  std::vector<std::size_t> offset(layout.level.patches.size() + 1, 0);
+  for (std::size_t p = 0; p < layout.level.patches.size(); ++p)
+    offset[p + 1] = offset[p] + CellField<T>(layout.level.patches[p], f.ghost_width()).size() * per;
+  if (v.size() != offset.back()) throw RuntimeFailure("checkpoint array '" + name + "' has a bad size");
+  for (std::size_t n = 0; n < f.size(); ++n) {
+    const auto p = static_cast<std::size_t>(f.patch_index(n));
+    double* d = reinterpret_cast<double*>(f[n].data());
+    std::copy(v.begin() + static_cast<long>(offset[p]), v.begin() + static_cast<long>(offset[p + 1]), d);
   }
 }
 
@@ -102,43 +135,43 @@ std::set<std::string> IceComponent::known_labels() const {
 
 void IceComponent::fill_output(const std::set<std::string>& labels, OutputFrame& frame) const {
   const Grid& g = setup_.grid;
-  frame.grid = &g;
+  frame.grid = &layout_.level;
   auto put = [&](const FieldArray& a) { frame.grid_fields.push_back({a, GridLocation::Cell}); };
   auto want = [&](const char* l) { return labels.count(l) > 0; };
   // Pressure-like fields are shared by the materials: material 0, as Uintah saves them.
-  if (want("press_CC")) put(gather(g, press_CC_, "press_CC", 0));
-  if (want("press_equil_CC")) put(gather(g, press_equil_CC_, "press_equil_CC", 0));
-  if (want("delP_Dilatate")) put(gather(g, delP_Dilatate_, "delP_Dilatate", 0));
+  if (want("press_CC")) put(gather(layout_, press_CC_, "press_CC", 0));
+  if (want("press_equil_CC")) put(gather(layout_, press_equil_CC_, "press_equil_CC", 0));
+  if (want("delP_Dilatate")) put(gather(layout_, delP_Dilatate_, "delP_Dilatate", 0));
   // Pressure change by mass exchange (Uintah's delP_MassX): exactly 0 without source models.
   if (want("delP_MassX") && model_src_) {
-    put(gather(g, delP_MassX_, "delP_MassX", 0));
+    put(gather(layout_, delP_MassX_, "delP_MassX", 0));
   } else if (want("delP_MassX")) {
     CellScalars zero(g, 0);
     zero.fill(0.0);
-    put(gather(g, zero, "delP_MassX", 0));
+    put(gather(layout_, zero, "delP_MassX", 0));
   }
   for (std::size_t m = 0; m < mats_.size(); ++m) {
     const IceMaterialFields& f = mats_[m];
     const int mi = static_cast<int>(m);
-    if (want("rho_CC")) put(gather(g, f.rho_CC, "rho_CC", mi));
-    if (want("temp_CC")) put(gather(g, f.temp_CC, "temp_CC", mi));
-    if (want("vel_CC")) put(gather(g, f.vel_CC, "vel_CC", mi));
-    if (want("vol_frac_CC")) put(gather(g, f.vol_frac_CC, "vol_frac_CC", mi));
-    if (want("sp_vol_CC")) put(gather(g, f.sp_vol_CC, "sp_vol_CC", mi));
-    if (want("speedSound_CC")) put(gather(g, f.speedSound_CC, "speedSound_CC", mi));
-    if (want("rho_micro_CC")) put(gather(g, f.rho_micro_CC, "rho_micro_CC", mi));
-    if (want("mom_L_ME_CC")) put(gather(g, f.mom_L_ME_CC, "mom_L_ME_CC", mi));
-    if (want("eng_L_ME_CC")) put(gather(g, f.eng_L_ME_CC, "eng_L_ME_CC", mi));
-    if (want("mom_source_CC")) put(gather(g, f.mom_source_CC, "mom_source_CC", mi));
+    if (want("rho_CC")) put(gather(layout_, f.rho_CC, "rho_CC", mi));
+    if (want("temp_CC")) put(gather(layout_, f.temp_CC, "temp_CC", mi));
+    if (want("vel_CC")) put(gather(layout_, f.vel_CC, "vel_CC", mi));
+    if (want("vol_frac_CC")) put(gather(layout_, f.vol_frac_CC, "vol_frac_CC", mi));
+    if (want("sp_vol_CC")) put(gather(layout_, f.sp_vol_CC, "sp_vol_CC", mi));
+    if (want("speedSound_CC")) put(gather(layout_, f.speedSound_CC, "speedSound_CC", mi));
+    if (want("rho_micro_CC")) put(gather(layout_, f.rho_micro_CC, "rho_micro_CC", mi));
+    if (want("mom_L_ME_CC")) put(gather(layout_, f.mom_L_ME_CC, "mom_L_ME_CC", mi));
+    if (want("eng_L_ME_CC")) put(gather(layout_, f.eng_L_ME_CC, "eng_L_ME_CC", mi));
+    if (want("mom_source_CC")) put(gather(layout_, f.mom_source_CC, "mom_source_CC", mi));
     // Lagrangian values of the last step (eq. 26.8-26.10, before the exchange):
     // interior cells (the extra cells hold 0).
-    if (want("mass_L_CC")) put(gather(g, mass_L_[m], "mass_L_CC", mi));
-    if (want("mom_L_CC")) put(gather(g, f.mom_L_CC, "mom_L_CC", mi));
-    if (want("int_eng_L_CC")) put(gather(g, f.int_eng_L_CC, "int_eng_L_CC", mi));
+    if (want("mass_L_CC")) put(gather(layout_, mass_L_[m], "mass_L_CC", mi));
+    if (want("mom_L_CC")) put(gather(layout_, f.mom_L_CC, "mom_L_CC", mi));
+    if (want("int_eng_L_CC")) put(gather(layout_, f.int_eng_L_CC, "int_eng_L_CC", mi));
   }
   for (const IceModelP& model : setup_.models)
     for (const ModelField& mf : model->fields())
-      if (labels.count(mf.label)) put(gather(g, *mf.field, mf.label, mf.material));
+      if (labels.count(mf.label)) put(gather(layout_, *mf.field, mf.label, mf.material));
   static const GridLocation kFace[3] = {GridLocation::FaceX, GridLocation::FaceY, GridLocation::FaceZ};
   for (std::size_t m = 0; m < mats_.size(); ++m)
     for (int d = 0; d < 3; ++d)
@@ -146,7 +179,7 @@ void IceComponent::fill_output(const std::set<std::string>& labels, OutputFrame&
         const std::string label = kFaceLabels[3 * me + d];
         if (!want(label.c_str())) continue;
         const FaceScalars& f = me == 0 ? mats_[m].vel_FC : mats_[m].vel_FCME;
-        frame.grid_fields.push_back({gather_faces(g, f, d, label, static_cast<int>(m)), kFace[d]});
+        frame.grid_fields.push_back({gather_faces(layout_, f, d, label, static_cast<int>(m)), kFace[d]});
       }
 }
 
@@ -156,12 +189,16 @@ void IceComponent::fill_output(const std::set<std::string>& labels, OutputFrame&
 std::map<std::string, std::vector<double>> IceComponent::reductions(const std::set<std::string>& labels) const {
   const Grid& g = setup_.grid;
   const double V = g.cell_volume();
-  double mass = 0, ke = 0, ie = 0;
-  Vec3 mom = Vec3::Zero();
-  for (std::size_t m = 0; m < mats_.size(); ++m) {
-    if (setup_.materials[m].lagrangian) continue;  // MPMICE solids: counted by their particles
-    const double cv = setup_.materials[m].cv;
-    for (std::size_t pi = 0; pi < g.patches.size(); ++pi) {
+  // One partial per patch (its cells in (k, j, i) order, materials in turn),
+  // added in ascending patch id (PatchLayout::ordered_sum): the same bits on
+  // any number of ranks.
+  std::vector<PatchPartial> partials;
+  for (std::size_t pi = 0; pi < g.patches.size(); ++pi) {
+    double mass = 0, ke = 0, ie = 0;
+    Vec3 mom = Vec3::Zero();
+    for (std::size_t m = 0; m < mats_.size(); ++m) {
+      if (setup_.materials[m].lagrangian) continue;  // MPMICE solids: counted by their particles
+      const double cv = setup_.materials[m].cv;
       const IndexRange r = g.patches[pi].cells();
       for (int k = r.lo[2]; k < r.hi[2]; ++k)
         for (int j = r.lo[1]; j < r.hi[1]; ++j)
@@ -174,7 +211,11 @@ std::map<std::string, std::vector<double>> IceComponent::reductions(const std::s
             ie += M * cv * mats_[m].temp_CC[pi](i, j, k);
           }
     }
+    partials.push_back({g.patches[pi].id, {mass, ke, ie, mom[0], mom[1], mom[2]}});
   }
+  const std::vector<double> sum = layout_.ordered_sum(partials, 6);
+  const double mass = sum[0], ke = sum[1], ie = sum[2];
+  const Vec3 mom(sum[3], sum[4], sum[5]);
   std::map<std::string, std::vector<double>> out;
   if (labels.count("TotalMass")) out["TotalMass"] = {mass};
   if (labels.count("KineticEnergy")) out["KineticEnergy"] = {ke};
@@ -189,49 +230,52 @@ std::map<std::string, std::vector<double>> IceComponent::reductions(const std::s
 // step); the other saved fields so that the first output after a restart is
 // the same.
 void IceComponent::save_state(StateArchive& a) const {
-  a.put("ice.press_CC", flatten(press_CC_));
-  a.put("ice.press_equil_CC", flatten(press_equil_CC_));
-  a.put("ice.delP_Dilatate", flatten(delP_Dilatate_));
+  a.put("ice.press_CC", flatten(layout_, press_CC_));
+  a.put("ice.press_equil_CC", flatten(layout_, press_equil_CC_));
+  a.put("ice.delP_Dilatate", flatten(layout_, delP_Dilatate_));
   for (std::size_t m = 0; m < mats_.size(); ++m) {
     const std::string pre = "ice.m" + std::to_string(m) + ".";
     const IceMaterialFields& f = mats_[m];
-    a.put(pre + "rho_CC", flatten(f.rho_CC));
-    a.put(pre + "vel_CC", flatten(f.vel_CC));
-    a.put(pre + "temp_CC", flatten(f.temp_CC));
-    a.put(pre + "sp_vol_CC", flatten(f.sp_vol_CC));
-    a.put(pre + "rho_micro_CC", flatten(f.rho_micro_CC));
-    a.put(pre + "vol_frac_CC", flatten(f.vol_frac_CC));
-    a.put(pre + "speedSound_CC", flatten(f.speedSound_CC));
-    a.put(pre + "mom_L_ME_CC", flatten(f.mom_L_ME_CC));
-    a.put(pre + "eng_L_ME_CC", flatten(f.eng_L_ME_CC));
+    a.put(pre + "rho_CC", flatten(layout_, f.rho_CC));
+    a.put(pre + "vel_CC", flatten(layout_, f.vel_CC));
+    a.put(pre + "temp_CC", flatten(layout_, f.temp_CC));
+    a.put(pre + "sp_vol_CC", flatten(layout_, f.sp_vol_CC));
+    a.put(pre + "rho_micro_CC", flatten(layout_, f.rho_micro_CC));
+    a.put(pre + "vol_frac_CC", flatten(layout_, f.vol_frac_CC));
+    a.put(pre + "speedSound_CC", flatten(layout_, f.speedSound_CC));
+    a.put(pre + "mom_L_ME_CC", flatten(layout_, f.mom_L_ME_CC));
+    a.put(pre + "eng_L_ME_CC", flatten(layout_, f.eng_L_ME_CC));
   }
   for (std::size_t k = 0; k < setup_.models.size(); ++k) {
     const std::string pre = "ice.model" + std::to_string(k) + ".";
-    for (auto& [name, field] : setup_.models[k]->state_fields()) a.put(pre + name, flatten(*field));
+    for (auto& [name, field] : setup_.models[k]->state_fields()) a.put(pre + name, flatten(layout_, *field));
     for (auto& [name, value] : setup_.models[k]->state_scalars()) a.put_scalar(pre + name, *value);
   }
 }
 
 void IceComponent::load_state(const StateArchive& a) {
-  restore(a, "ice.press_CC", press_CC_);
-  restore(a, "ice.press_equil_CC", press_equil_CC_);
-  restore(a, "ice.delP_Dilatate", delP_Dilatate_);
+  // A restart (tephra --restart) builds a fresh component: lay out the
+  // patches and allocate the fields first; the archive then overwrites them.
+  if (!laid_out_) initialize();
+  restore(layout_, a, "ice.press_CC", press_CC_);
+  restore(layout_, a, "ice.press_equil_CC", press_equil_CC_);
+  restore(layout_, a, "ice.delP_Dilatate", delP_Dilatate_);
   for (std::size_t m = 0; m < mats_.size(); ++m) {
     const std::string pre = "ice.m" + std::to_string(m) + ".";
     IceMaterialFields& f = mats_[m];
-    restore(a, pre + "rho_CC", f.rho_CC);
-    restore(a, pre + "vel_CC", f.vel_CC);
-    restore(a, pre + "temp_CC", f.temp_CC);
-    restore(a, pre + "sp_vol_CC", f.sp_vol_CC);
-    restore(a, pre + "rho_micro_CC", f.rho_micro_CC);
-    restore(a, pre + "vol_frac_CC", f.vol_frac_CC);
-    restore(a, pre + "speedSound_CC", f.speedSound_CC);
-    restore(a, pre + "mom_L_ME_CC", f.mom_L_ME_CC);
-    restore(a, pre + "eng_L_ME_CC", f.eng_L_ME_CC);
+    restore(layout_, a, pre + "rho_CC", f.rho_CC);
+    restore(layout_, a, pre + "vel_CC", f.vel_CC);
+    restore(layout_, a, pre + "temp_CC", f.temp_CC);
+    restore(layout_, a, pre + "sp_vol_CC", f.sp_vol_CC);
+    restore(layout_, a, pre + "rho_micro_CC", f.rho_micro_CC);
+    restore(layout_, a, pre + "vol_frac_CC", f.vol_frac_CC);
+    restore(layout_, a, pre + "speedSound_CC", f.speedSound_CC);
+    restore(layout_, a, pre + "mom_L_ME_CC", f.mom_L_ME_CC);
+    restore(layout_, a, pre + "eng_L_ME_CC", f.eng_L_ME_CC);
   }
   for (std::size_t k = 0; k < setup_.models.size(); ++k) {
     const std::string pre = "ice.model" + std::to_string(k) + ".";
-    for (auto& [name, field] : setup_.models[k]->state_fields()) restore(a, pre + name, *field);
+    for (auto& [name, field] : setup_.models[k]->state_fields()) restore(layout_, a, pre + name, *field);
     for (auto& [name, value] : setup_.models[k]->state_scalars()) *value = a.scalar(pre + name);
   }
 }

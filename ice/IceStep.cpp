@@ -523,16 +523,18 @@ void IceComponent::lagrangian_values_and_exchange(double dt) {
   // the step-restart machinery active (implicit, or source models) the step is
   // redone with dt/2, else the end-of-step state check stops the run.
   if (setup_.implicit.enabled || model_src_) {
-    for (std::size_t m = 0; m < nm; ++m)
-      for (std::size_t pi = 0; pi < g.patches.size(); ++pi)
+    std::string why;  // the first bad cell of this rank; every rank restarts if any has one
+    for (std::size_t m = 0; m < nm && why.empty(); ++m)
+      for (std::size_t pi = 0; pi < g.patches.size() && why.empty(); ++pi)
         for_each_cell_serial(g.patches[pi].cells(), [&](int i, int j, int k) {
           const double v = spv_L_[m][pi](i, j, k);
-          if (v > 0 && std::isfinite(v)) return;
+          if (!why.empty() || (v > 0 && std::isfinite(v))) return;
           std::ostringstream os;
           os << "Lagrangian specific volume " << v << " of material " << m << " in cell (" << i << "," << j << ","
              << k << ")";
-          throw StepRestart{os.str()};
+          why = os.str();
         });
+    if (layout_.any(!why.empty())) throw StepRestart{why.empty() ? "a bad Lagrangian specific volume on another MPI rank" : why};
   }
   // Boundary values of the Lagrangian state; output copies.
   for (std::size_t m = 0; m < nm; ++m) {

@@ -153,7 +153,7 @@ void IceComponent::implicit_pressure_solve(double dt, int step) {
   for (;; ++it) {
     compute_face_velocities(dt, press_CC_);
     add_exchange_to_face_velocities(dt);
-    max_rhs = pressure_residual(dt);
+    max_rhs = layout_.max(pressure_residual(dt));  // the same on every rank: one decision
     if (max_rhs < im.outer_iteration_tolerance) break;
     if (it == im.max_outer_iterations) {
       std::ostringstream os;

@@ -15,6 +15,7 @@
 #include "core/base/Errors.h"
 #include "core/base/Mpi.h"
 #include "core/grid/Loop.h"
+#include "core/parallel/Ranks.h"
 
 namespace tephra {
 
@@ -52,14 +53,19 @@ struct PressureSolver::Impl {
   HYPRE_StructGrid hgrid = nullptr;
   HYPRE_StructStencil stencil = nullptr;
   std::vector<Box> boxes;  // one per patch
+  MPI_Comm comm = MPI_COMM_SELF;
+  bool distributed = false;
 };
 
-PressureSolver::PressureSolver(const Grid& g, const HypreSettings& settings) : impl_(std::make_unique<Impl>()) {
+PressureSolver::PressureSolver(const Grid& g, const HypreSettings& settings, bool distributed)
+    : impl_(std::make_unique<Impl>()) {
   ensure_hypre_initialized();
   Impl& im = *impl_;
   im.grid = &g;
   im.settings = settings;
-  check(HYPRE_StructGridCreate(MPI_COMM_WORLD, 3, &im.hgrid), "StructGridCreate");
+  im.distributed = distributed;
+  im.comm = distributed ? MPI_COMM_WORLD : MPI_COMM_SELF;
+  check(HYPRE_StructGridCreate(im.comm, 3, &im.hgrid), "StructGridCreate");
   for (const Patch& p : g.patches) {
     Box b;
     b.size = 1;
@@ -95,6 +101,7 @@ LinearSolveResult PressureSolver::solve(const StencilCoefficients& A, const Cell
   double bmax = 0;
   for (std::size_t pi = 0; pi < g.patches.size(); ++pi)
     for_each_cell_serial(g.patches[pi].cells(), [&](int i, int j, int k) { bmax = std::max(bmax, std::abs(b[pi](i, j, k))); });
+  if (im.distributed) bmax = all_max(bmax);  // every rank takes the same branch
   if (bmax == 0.0) {
     for (std::size_t pi = 0; pi < g.patches.size(); ++pi)
       for_each_cell_serial(g.patches[pi].cells(), [&](int i, int j, int k) { x[pi](i, j, k) = 0.0; });
@@ -104,10 +111,10 @@ LinearSolveResult PressureSolver::solve(const StencilCoefficients& A, const Cell
 
   HYPRE_StructMatrix HA = nullptr;
   HYPRE_StructVector hb = nullptr, hx = nullptr;
-  check(HYPRE_StructMatrixCreate(MPI_COMM_WORLD, im.hgrid, im.stencil, &HA), "StructMatrixCreate");
+  check(HYPRE_StructMatrixCreate(im.comm, im.hgrid, im.stencil, &HA), "StructMatrixCreate");
   check(HYPRE_StructMatrixInitialize(HA), "StructMatrixInitialize");
-  check(HYPRE_StructVectorCreate(MPI_COMM_WORLD, im.hgrid, &hb), "StructVectorCreate");
-  check(HYPRE_StructVectorCreate(MPI_COMM_WORLD, im.hgrid, &hx), "StructVectorCreate");
+  check(HYPRE_StructVectorCreate(im.comm, im.hgrid, &hb), "StructVectorCreate");
+  check(HYPRE_StructVectorCreate(im.comm, im.hgrid, &hx), "StructVectorCreate");
   check(HYPRE_StructVectorInitialize(hb), "StructVectorInitialize");
   check(HYPRE_StructVectorInitialize(hx), "StructVectorInitialize");
 
@@ -142,7 +149,7 @@ LinearSolveResult PressureSolver::solve(const StencilCoefficients& A, const Cell
   // Multigrid preconditioner: one V-cycle from a zero guess.
   auto make_precond = [&]() {
     if (hs.preconditioner == "pfmg") {
-      HYPRE_StructPFMGCreate(MPI_COMM_WORLD, &precond);
+      HYPRE_StructPFMGCreate(im.comm, &precond);
       HYPRE_StructPFMGSetMaxIter(precond, 1);
       HYPRE_StructPFMGSetTol(precond, 0.0);
       HYPRE_StructPFMGSetZeroGuess(precond);
@@ -151,7 +158,7 @@ LinearSolveResult PressureSolver::solve(const StencilCoefficients& A, const Cell
       HYPRE_StructPFMGSetNumPostRelax(precond, hs.npost);
       HYPRE_StructPFMGSetSkipRelax(precond, hs.skip);
     } else if (hs.preconditioner == "smg") {
-      HYPRE_StructSMGCreate(MPI_COMM_WORLD, &precond);
+      HYPRE_StructSMGCreate(im.comm, &precond);
       HYPRE_StructSMGSetMaxIter(precond, 1);
       HYPRE_StructSMGSetTol(precond, 0.0);
       HYPRE_StructSMGSetZeroGuess(precond);
@@ -166,7 +173,7 @@ LinearSolveResult PressureSolver::solve(const StencilCoefficients& A, const Cell
   };
 
   if (hs.solver == "cg") {
-    HYPRE_StructPCGCreate(MPI_COMM_WORLD, &solver);
+    HYPRE_StructPCGCreate(im.comm, &solver);
     HYPRE_StructPCGSetTol(solver, tol);
     HYPRE_StructPCGSetMaxIter(solver, hs.max_iterations);
     HYPRE_StructPCGSetTwoNorm(solver, 1);
@@ -185,7 +192,7 @@ LinearSolveResult PressureSolver::solve(const StencilCoefficients& A, const Cell
     HYPRE_StructPCGDestroy(solver);
     destroy_precond();
   } else if (hs.solver == "gmres") {
-    HYPRE_StructGMRESCreate(MPI_COMM_WORLD, &solver);
+    HYPRE_StructGMRESCreate(im.comm, &solver);
     HYPRE_StructGMRESSetTol(solver, tol);
     HYPRE_StructGMRESSetMaxIter(solver, hs.max_iterations);
     make_precond();
@@ -202,7 +209,7 @@ LinearSolveResult PressureSolver::solve(const StencilCoefficients& A, const Cell
     HYPRE_StructGMRESDestroy(solver);
     destroy_precond();
   } else if (hs.solver == "pfmg") {
-    HYPRE_StructPFMGCreate(MPI_COMM_WORLD, &solver);
+    HYPRE_StructPFMGCreate(im.comm, &solver);
     HYPRE_StructPFMGSetTol(solver, tol);
     HYPRE_StructPFMGSetMaxIter(solver, hs.max_iterations);
     HYPRE_StructPFMGSetRelaxType(solver, hs.relax_type);
@@ -215,7 +222,7 @@ LinearSolveResult PressureSolver::solve(const StencilCoefficients& A, const Cell
     HYPRE_StructPFMGGetFinalRelativeResidualNorm(solver, &res);
     HYPRE_StructPFMGDestroy(solver);
   } else {  // smg
-    HYPRE_StructSMGCreate(MPI_COMM_WORLD, &solver);
+    HYPRE_StructSMGCreate(im.comm, &solver);
     HYPRE_StructSMGSetTol(solver, tol);
     HYPRE_StructSMGSetMaxIter(solver, hs.max_iterations);
     HYPRE_StructSMGSetNumPreRelax(solver, hs.npre);

@@ -29,7 +29,11 @@ struct LinearSolveResult {
 
 class PressureSolver {
  public:
-  PressureSolver(const Grid& g, const HypreSettings& settings);
+  // `g` holds this process's patches (one hypre box each). distributed: the
+  // patches of the level are spread over MPI_COMM_WORLD's ranks and every
+  // rank constructs and solves together (hypre's communicator is the world);
+  // else this process holds the whole level (MPI_COMM_SELF).
+  PressureSolver(const Grid& g, const HypreSettings& settings, bool distributed = false);
   ~PressureSolver();
   PressureSolver(const PressureSolver&) = delete;
   PressureSolver& operator=(const PressureSolver&) = delete;

@@ -119,7 +119,10 @@ class PatchFields {
   PatchFields(const Grid& grid, int ghosts) : grid_(&grid), ghosts_(ghosts) {
     fields_.reserve(grid.patches.size());
     for (const Patch& p : grid.patches) fields_.emplace_back(p, ghosts);
-    for (size_t n = 0; n < grid.patches.size(); ++n) patch_index_.push_back(int(n));
+    // Patch::id is the patch's index in the level's list (make_grid); a
+    // rank-local copy of the grid that keeps only its own patches keeps their
+    // ids, so patch_index() stays the index into the whole level's patches.
+    for (const Patch& p : grid.patches) patch_index_.push_back(p.id);
   }
   // The fields of some patches only (an MPI rank's own patches, in the order
   // given): field n belongs to grid.patches[patch_indices[n]].

@@ -3,6 +3,7 @@
 #include <mpi.h>
 
 #include <cstdlib>
+#include <stdexcept>
 
 #include "core/base/Mpi.h"
 
@@ -42,6 +43,66 @@ std::vector<double> all_gather(const std::vector<double>& local) {
 
 void barrier() {
   if (world_ranks().size > 1) MPI_Barrier(MPI_COMM_WORLD);
+}
+
+void abort_other_ranks(int code) {
+  if (launched_rank_count() <= 1 || !mpi_is_initialized()) return;
+  int size = 1;
+  MPI_Comm_size(MPI_COMM_WORLD, &size);
+  if (size > 1) MPI_Abort(MPI_COMM_WORLD, code);
+}
+
+double all_min(double v) {
+  if (world_ranks().size == 1) return v;
+  double out = v;
+  MPI_Allreduce(&v, &out, 1, MPI_DOUBLE, MPI_MIN, MPI_COMM_WORLD);
+  return out;
+}
+
+double all_max(double v) {
+  if (world_ranks().size == 1) return v;
+  double out = v;
+  MPI_Allreduce(&v, &out, 1, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD);
+  return out;
+}
+
+bool any_rank(bool flag) {
+  if (world_ranks().size == 1) return flag;
+  int in = flag ? 1 : 0, out = 0;
+  MPI_Allreduce(&in, &out, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
+  return out != 0;
+}
+
+std::vector<std::vector<double>> gather_patch_blocks(const std::vector<int>& owner,
+                                                     const std::vector<int>& own_patches,
+                                                     const std::vector<std::vector<double>>& own_blocks) {
+  if (own_patches.size() != own_blocks.size())
+    throw std::invalid_argument("gather_patch_blocks: one block per own patch");
+  const Ranks r = world_ranks();
+  std::vector<std::vector<double>> all(owner.size());
+  if (r.size == 1) {
+    for (std::size_t n = 0; n < own_patches.size(); ++n) all[static_cast<std::size_t>(own_patches[n])] = own_blocks[n];
+    return all;
+  }
+  // Block sizes first (as doubles: exact below 2^53), then the values; both
+  // arrive concatenated in rank order, each rank's patches in its own order.
+  std::vector<double> sizes, values;
+  for (std::size_t n = 0; n < own_blocks.size(); ++n) {
+    sizes.push_back(static_cast<double>(own_patches[n]));
+    sizes.push_back(static_cast<double>(own_blocks[n].size()));
+    values.insert(values.end(), own_blocks[n].begin(), own_blocks[n].end());
+  }
+  const std::vector<double> all_sizes = all_gather(sizes);
+  const std::vector<double> all_values = all_gather(values);
+  std::size_t pos = 0;
+  for (std::size_t s = 0; s + 1 < all_sizes.size(); s += 2) {
+    const auto p = static_cast<std::size_t>(all_sizes[s]);
+    const auto n = static_cast<std::size_t>(all_sizes[s + 1]);
+    if (p >= all.size()) throw std::invalid_argument("gather_patch_blocks: patch index out of range");
+    all[p].assign(all_values.begin() + static_cast<long>(pos), all_values.begin() + static_cast<long>(pos + n));
+    pos += n;
+  }
+  return all;
 }
 
 }  // namespace tephra

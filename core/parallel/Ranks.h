@@ -29,4 +29,25 @@ std::vector<double> all_gather(const std::vector<double>& local);
 // Barrier across the world (no-op with one rank).
 void barrier();
 
+// Under mpirun with more than one rank: stops every rank with exit `code`
+// (MPI_Abort), so that an error on one rank does not leave the others waiting
+// in a collective. Returns (does nothing) with one rank.
+void abort_other_ranks(int code);
+
+// The minimum / maximum of `v` over all ranks (exact in any order, so every
+// rank gets the same bits); `v` itself with one rank.
+double all_min(double v);
+double all_max(double v);
+// True on every rank when `flag` is true on at least one rank.
+bool any_rank(bool flag);
+
+// Per-patch blocks of doubles, gathered onto every rank in patch order:
+// `own_blocks[n]` is this rank's block of patch `own_patches[n]`; the result
+// has one block per patch, result[p] from the rank that owns patch p
+// (`owner[p]`, the same vector on every rank). One process: the blocks
+// themselves. Used to write rank-local fields as the one-rank run does.
+std::vector<std::vector<double>> gather_patch_blocks(const std::vector<int>& owner,
+                                                     const std::vector<int>& own_patches,
+                                                     const std::vector<std::vector<double>>& own_blocks);
+
 }  // namespace tephra

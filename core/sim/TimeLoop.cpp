@@ -11,6 +11,7 @@
 #include "core/base/Log.h"
 #include "core/base/PhaseTimers.h"
 #include "core/io/OutputWriter.h"
+#include "core/parallel/Ranks.h"
 
 namespace tephra {
 
@@ -92,13 +93,15 @@ bool TimeLoop::checkpoint_due() const {
 void TimeLoop::write_output() {
   PhaseTimers::Scope scope(phase_timers(), "output");
   std::set<std::string> labels = archiver_.labels();
+  // Every rank computes the reductions and the frame (collectives under
+  // mpirun: the component gathers its patches); rank 0 alone writes.
   auto reductions = component_.reductions(labels);
-  if (!reductions.empty()) writer_->append_reductions(state_.time, reductions);
+  if (writer_ && !reductions.empty()) writer_->append_reductions(state_.time, reductions);
   OutputFrame frame;
   frame.step = static_cast<int>(state_.step);
   frame.time = state_.time;
   component_.fill_output(labels, frame);
-  writer_->write_frame(frame);
+  if (writer_) writer_->write_frame(frame);
   last_output_step_ = state_.step;
   if (archiver_.output_interval) {
     // Advance to the first output time after now.
@@ -120,13 +123,16 @@ void TimeLoop::write_checkpoint() {
   archive.put_scalar("timeloop.previous_dt", state_.previous_dt);
   archive.put_int("timeloop.outputs_done", state_.outputs_done);
   archive.put_int("timeloop.checkpoints_done", state_.checkpoints_done);
-  CheckpointStore(options_.output_dir, archiver_.checkpoint_cycle).write(static_cast<int>(state_.step), archive);
+  if (writer_) CheckpointStore(options_.output_dir, archiver_.checkpoint_cycle).write(static_cast<int>(state_.step), archive);
 }
 
 void TimeLoop::run(const std::string& resolved_deck_xml) {
   wall_start_ = wall_seconds();
-  writer_ = std::make_unique<OutputWriter>(options_.output_dir, false);
-  writer_->write_deck_copy(resolved_deck_xml);
+  if (world_ranks().is_root()) {  // under mpirun rank 0 writes the output of all ranks
+    writer_ = std::make_unique<OutputWriter>(options_.output_dir, false);
+    writer_->write_deck_copy(resolved_deck_xml);
+  }
+  barrier();  // the output directory exists before any rank reads or writes in it
   {
     PhaseTimers::Scope scope(phase_timers(), "initialize");
     component_.initialize();
@@ -161,8 +167,11 @@ void TimeLoop::restart(int checkpoint_step) {
   state_.previous_dt = archive.scalar("timeloop.previous_dt");
   state_.outputs_done = archive.integer("timeloop.outputs_done");
   state_.checkpoints_done = archive.integer("timeloop.checkpoints_done");
-  writer_ = std::make_unique<OutputWriter>(options_.output_dir, true);
-  writer_->truncate_after(static_cast<int>(state_.step), state_.time);
+  barrier();  // every rank has read the checkpoint before rank 0 truncates the output after it
+  if (world_ranks().is_root()) {
+    writer_ = std::make_unique<OutputWriter>(options_.output_dir, true);
+    writer_->truncate_after(static_cast<int>(state_.step), state_.time);
+  }
   log::info("restarting from checkpoint at step " + std::to_string(state_.step) + ", t = " + fmt(state_.time));
   step_until_end();
 }
@@ -191,7 +200,7 @@ void TimeLoop::step_until_end() {
         frame.step = static_cast<int>(state_.step + 1);
         frame.time = state_.time;
         component_.fill_output(archiver_.labels(), frame);
-        writer_->write_frame(frame);
+        if (writer_) writer_->write_frame(frame);
         log::warning("wrote the last state to " + options_.output_dir + " (frame " +
                      std::to_string(frame.step) + ")");
       } catch (const std::exception& e) {

@@ -15,6 +15,7 @@
 #include "core/deck/Validate.h"
 #include "core/grid/Loop.h"
 #include "core/io/Extract.h"
+#include "core/parallel/Ranks.h"
 #include "core/sim/RunParameters.h"
 #include "core/sim/TimeLoop.h"
 #include "mpmice/ComponentFactory.h"
@@ -104,6 +105,9 @@ PreparedRun prepare(const std::string& deck_path) {
   r.time = read_time_parameters(r.deck->root.require_child("Time"));
   r.archiver = read_archiver_parameters(r.deck->root.require_child("DataArchiver"));
   r.component = make_component(*r.deck);
+  if (world_ranks().size > 1 && r.component->name() != "ICE")
+    throw MissingFeature({}, r.component->name() + " on more than one MPI rank (issue 7: ICE runs on ranks; "
+                                                   "run MPM and MPMICE decks without mpirun)");
   // Every saved label must be one the component can produce.
   std::set<std::string> known = r.component->known_labels();
   for (const DeckNode* s : r.deck->root.require_child("DataArchiver").children_named("save")) {
@@ -209,7 +213,7 @@ int run_command_line(int argc, char** argv) {
     if (argc < 2) throw UsageError("");
     if (std::string(argv[1]) == "extract") return run_extract(parse(argc, argv, 2));
     Arguments a = parse(argc, argv, 1);
-    log::set_quiet(a.quiet);
+    log::set_quiet(a.quiet || !world_ranks().is_root());  // under mpirun rank 0 speaks for all
     if (a.threads) set_thread_count(*a.threads);
     if (a.list) {
       if (!a.positional.empty()) throw UsageError("--list takes only a family name");
@@ -233,9 +237,11 @@ int run_command_line(int argc, char** argv) {
                        : e.code() == ExitCode::NumericalFailure ? "numerical failure"
                                                                 : "error";
     std::cerr << "\ntephra: " << kind << ": " << e.what() << "\n";
+    abort_other_ranks(static_cast<int>(e.code()));
     return static_cast<int>(e.code());
   } catch (const std::exception& e) {
     std::cerr << "tephra: error: " << e.what() << "\n";
+    abort_other_ranks(static_cast<int>(ExitCode::InvalidDeck));
     return static_cast<int>(ExitCode::InvalidDeck);
   }
 }

@@ -1,0 +1,66 @@
+# ctest mpi_cli_sod (label mpi): `mpirun -np 2 tephra DECK` writes what the
+# 1-rank run writes, and restarts across rank counts continue it.
+#   DECK: riemann_sm.ups (decks README A8) cut into 4 patches, the diaphragm
+#   at x = 0.5 on a patch cut, checkpoints every 40 steps.
+#   1. tephra DECK (no mpirun) -> np1;  mpirun -np 2 tephra DECK -> np2.
+#      Every .dat file of np1 must equal np2's byte for byte (rank 0 writes
+#      the ordered global sums), and `tephra extract --step last` of
+#      rho_CC, press_CC, vel_CC must print the same text.
+#   2. Restart 2 -> 1: a copy of np2 restarted by one process from its
+#      checkpoint before the end; 1 -> 2: a copy of np1 restarted by
+#      mpirun -np 2. Both must end with np1's .dat files and fields.
+# Variables: TEPHRA, MPIEXEC, DECK_IN, WORK.
+cmake_minimum_required(VERSION 3.16)
+
+function(run)
+  execute_process(COMMAND ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "failed (${rc}): ${ARGN}\n${out}\n${err}")
+  endif()
+endfunction()
+
+function(expect_same_output a b what)
+  file(GLOB dats RELATIVE ${a} ${a}/*.dat)
+  list(LENGTH dats n)
+  if(n EQUAL 0)
+    message(FATAL_ERROR "${a} has no .dat files")
+  endif()
+  foreach(d ${dats})
+    file(READ ${a}/${d} ta)
+    if(NOT EXISTS ${b}/${d})
+      message(FATAL_ERROR "${what}: ${b}/${d} missing")
+    endif()
+    file(READ ${b}/${d} tb)
+    if(NOT ta STREQUAL tb)
+      message(FATAL_ERROR "${what}: ${d} differs\n--- ${a}\n${ta}\n--- ${b}\n${tb}")
+    endif()
+  endforeach()
+  foreach(var rho_CC press_CC vel_CC)
+    execute_process(COMMAND ${TEPHRA} extract ${a} --var ${var} --step last OUTPUT_VARIABLE ea RESULT_VARIABLE ra)
+    execute_process(COMMAND ${TEPHRA} extract ${b} --var ${var} --step last OUTPUT_VARIABLE eb RESULT_VARIABLE rb)
+    if(NOT ra EQUAL 0 OR NOT rb EQUAL 0 OR NOT ea STREQUAL eb OR ea STREQUAL "")
+      message(FATAL_ERROR "${what}: extract ${var} differs (exit ${ra}, ${rb})")
+    endif()
+  endforeach()
+  message(STATUS "${what}: ${n} .dat files and rho_CC, press_CC, vel_CC identical")
+endfunction()
+
+file(REMOVE_RECURSE ${WORK})
+file(MAKE_DIRECTORY ${WORK})
+file(READ ${DECK_IN} deck)
+string(REGEX REPLACE "<patches>[^<]*</patches>" "<patches>[4,1,1]</patches>" deck "${deck}")
+string(REGEX REPLACE "<checkpoint[^>]*/>" "<checkpoint timestepInterval=\"40\" cycle=\"2\"/>" deck "${deck}")
+file(WRITE ${WORK}/sod4.ups "${deck}")
+
+set(MPI2 ${MPIEXEC} -n 2)
+run(${TEPHRA} ${WORK}/sod4.ups --output ${WORK}/np1 --quiet)
+run(${MPI2} ${TEPHRA} ${WORK}/sod4.ups --output ${WORK}/np2 --quiet)
+expect_same_output(${WORK}/np1 ${WORK}/np2 "1 vs 2 ranks")
+
+file(COPY ${WORK}/np2/ DESTINATION ${WORK}/restart21)
+run(${TEPHRA} --restart ${WORK}/restart21 --quiet)
+expect_same_output(${WORK}/np1 ${WORK}/restart21 "checkpoint of 2 ranks restarted on 1")
+
+file(COPY ${WORK}/np1/ DESTINATION ${WORK}/restart12)
+run(${MPI2} ${TEPHRA} --restart ${WORK}/restart12 --quiet)
+expect_same_output(${WORK}/np1 ${WORK}/restart12 "checkpoint of 1 rank restarted on 2")
