@@ -290,7 +290,7 @@ double IceComponent::stable_timestep() const {
 }
 
 // One explicit ICE step (Vaango theory manual ch. 26 step list, pure-fluid
-// subset; inventory ch. 24 "ICE time step"). docs/ice.md has the equations.
+// subset; inventory ch. 24 "ICE time step"). docs/algorithms/ice.md has the equations.
 void IceComponent::advance(double t, double dt, int step) {
   time_ = t;
   // Implicit, and explicit with source models: a step that fails (no pressure

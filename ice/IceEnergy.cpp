@@ -1,4 +1,4 @@
-// Total-energy conservation of the ICE step (docs/ice.md "Total energy at
+// Total-energy conservation of the ICE step (docs/algorithms/ice.md "Total energy at
 // shocks"). Uintah's ICE evolves the internal energy M c_v T with the work
 // term V theta kappa p delP (eq. 26.7) and the momentum with the face
 // pressures p* (eq. 26.5), and advects mass and momentum separately (step 10).
