@@ -271,6 +271,8 @@ double IceComponent::stable_timestep() const {
     }
   }
   dt *= setup_.cfl;
+  // Source models' own explicit limits (PassiveScalar diffusion), not scaled by cfl.
+  for (const IceModelP& model : setup_.models) dt = std::min(dt, model->stable_timestep());
   // Explicit diffusion limit (viscosity, conduction): the forward-Euler
   // stability bound of u_t = D lap u, dt <= 1/(2 D sum_d 1/dx_d^2), with
   // D = max(mu/rho, k/(rho cv)) over the cells (rho the micro density).
