@@ -14,7 +14,8 @@
 //
 // The N x N system (I + diag(sum_n beta_mn) - beta) x^new = x is solved per
 // call by Gaussian elimination without pivoting (the matrix is strictly
-// diagonally dominant by rows); N <= kMaxExchangeMaterials.
+// diagonally dominant by rows); N <= kMaxExchangeMaterials; N = 2 by its
+// closed form (TwoByTwo).
 #include <cassert>
 #include <span>
 
@@ -73,10 +74,34 @@ inline void solve_dominant(int n, double* a, std::span<double>* b, int nrhs) {
   }
 }
 
+// Two materials (the common case), closed form of the 2 x 2 system
+//   (1 + b12) x1' - b12 x2' = x1,   -b21 x1' + (1 + b21) x2' = x2,
+// det = 1 + b12 + b21 (Cramer's rule):
+//   x1' = ((1 + b21) x1 + b12 x2)/det,   x2' = (b21 x1 + (1 + b12) x2)/det.
+// One division instead of the elimination's three.
+struct TwoByTwo {
+  double b12, b21, inv_det;
+  TwoByTwo(double dt, std::span<const double> theta, std::span<const double> sp_vol, std::span<const double> scale,
+           std::span<const double> coeff) {
+    b12 = dt * theta[1] * coeff[1] * sp_vol[0] * (scale.empty() ? 1.0 : scale[0]);
+    b21 = dt * theta[0] * coeff[2] * sp_vol[1] * (scale.empty() ? 1.0 : scale[1]);
+    inv_det = 1.0 / (1.0 + b12 + b21);
+  }
+  void solve(std::span<double> x) const {
+    const double x1 = x[0], x2 = x[1];
+    x[0] = ((1.0 + b21) * x1 + b12 * x2) * inv_det;
+    x[1] = (b21 * x1 + (1.0 + b12) * x2) * inv_det;
+  }
+};
+
 }  // namespace exchange_detail
 
 inline void solve_exchange(double dt, std::span<const double> theta, std::span<const double> sp_vol,
                     std::span<const double> scale, std::span<const double> coeff, std::span<double> x) {
+  if (theta.size() == 2) {
+    exchange_detail::TwoByTwo(dt, theta, sp_vol, scale, coeff).solve(x);
+    return;
+  }
   double a[kMaxExchangeMaterials * kMaxExchangeMaterials];
   exchange_detail::exchange_matrix(dt, theta, sp_vol, scale, coeff, a);
   exchange_detail::solve_dominant(static_cast<int>(theta.size()), a, &x, 1);
@@ -85,6 +110,13 @@ inline void solve_exchange(double dt, std::span<const double> theta, std::span<c
 inline void solve_exchange3(double dt, std::span<const double> theta, std::span<const double> sp_vol,
                      std::span<const double> coeff, std::span<double> ux, std::span<double> uy,
                      std::span<double> uz) {
+  if (theta.size() == 2) {
+    const exchange_detail::TwoByTwo s(dt, theta, sp_vol, {}, coeff);
+    s.solve(ux);
+    s.solve(uy);
+    s.solve(uz);
+    return;
+  }
   double a[kMaxExchangeMaterials * kMaxExchangeMaterials];
   exchange_detail::exchange_matrix(dt, theta, sp_vol, {}, coeff, a);
   std::span<double> b[3] = {ux, uy, uz};

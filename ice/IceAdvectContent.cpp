@@ -1,5 +1,5 @@
 // Advection of the temperature and the specific volume as contents (step 12,
-// docs/ice.md "Temperature and specific volume as contents").
+// docs/algorithms/ice.md "Temperature and specific volume as contents").
 //
 // Uintah advects M T and M v (v = sp_vol = 1/rho_micro) as specific
 // quantities riding on the mass fluxes, F = F_M psi_slab, each psi with its

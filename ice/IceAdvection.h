@@ -22,7 +22,7 @@
 // step 10): a uniform psi stays uniform to round-off whatever the density.
 // Each face flux is computed once, so the update is conservative.
 //
-// Differences from Uintah (documented in docs/ice.md): Uintah moves the
+// Differences from Uintah (documented in docs/algorithms/ice.md): Uintah moves the
 // specific quantities' vertex values with the mass-weighted centroids
 // (mass_massVertex_ratio); here psi's slab value uses psi's own limited
 // gradient at the geometric slab centroid.

@@ -275,6 +275,8 @@ double IceComponent::stable_timestep() const {
     }
   }
   dt *= setup_.cfl;
+  // Source models' own explicit limits (PassiveScalar diffusion), not scaled by cfl.
+  for (const IceModelP& model : setup_.models) dt = std::min(dt, model->stable_timestep());
   // Explicit diffusion limit (viscosity, conduction): the forward-Euler
   // stability bound of u_t = D lap u, dt <= 1/(2 D sum_d 1/dx_d^2), with
   // D = max(mu/rho, k/(rho cv)) over the cells (rho the micro density).
@@ -294,7 +296,7 @@ double IceComponent::stable_timestep() const {
 }
 
 // One explicit ICE step (Vaango theory manual ch. 26 step list, pure-fluid
-// subset; inventory ch. 24 "ICE time step"). docs/ice.md has the equations.
+// subset; inventory ch. 24 "ICE time step"). docs/algorithms/ice.md has the equations.
 void IceComponent::advance(double t, double dt, int step) {
   time_ = t;
   // Implicit, and explicit with source models: a step that fails (no pressure

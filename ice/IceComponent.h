@@ -2,7 +2,7 @@
 // The explicit ICE component: multi-material, cell-centred, compressible flow
 // (Vaango theory manual ch. 24 and the step list of ch. 26 without the MPM
 // parts; Uintah's explicit ICE where the manual is silent). advance() in
-// IceComponent.cpp lists the step, one named phase per line; docs/ice.md
+// IceComponent.cpp lists the step, one named phase per line; docs/algorithms/ice.md
 // gives the equations.
 #include <functional>
 #include <memory>

@@ -228,7 +228,7 @@ void parse_timestep_control(const DeckNode& tc, IceSetup& s) {
 // <ImplicitSolver> (ice_spec.xml): outer iterations and the hypre parameters.
 // Parameters that only tune Uintah's own CG solver (initial_tolerance,
 // criteria, norm) or hypre internals Tephra leaves at hypre's defaults (jump,
-// logging, setupFrequency) are read and have no effect; docs/ice.md says so.
+// logging, setupFrequency) are read and have no effect; docs/algorithms/ice.md says so.
 void parse_implicit_solver(const DeckNode& is, IceSetup& s) {
   ImplicitSettings& im = s.implicit;
   im.enabled = true;
@@ -317,7 +317,7 @@ void parse_cfd(const DeckNode& root, IceSetup& s) {
   for (const DeckNode& c : cfd.children) {
     if (c.name == "cfl") {
       s.cfl = c.as_double();
-      // Uintah accepts any positive cfl. Above the stable limit (docs/ice.md:
+      // Uintah accepts any positive cfl. Above the stable limit (docs/algorithms/ice.md:
       // Sod is stable to 1.0 with the aggressive step) the run stops with exit 4
       // when a cell would lose more than its content (check_outflux) or the
       // state turns non-physical (check_state).

@@ -1,4 +1,4 @@
-// Total-energy conservation of the ICE step (docs/ice.md "Total energy at
+// Total-energy conservation of the ICE step (docs/algorithms/ice.md "Total energy at
 // shocks"). Uintah's ICE evolves the internal energy M c_v T with the work
 // term V theta kappa p delP (eq. 26.7) and the momentum with the face
 // pressures p* (eq. 26.5), and advects mass and momentum separately (step 10).
@@ -39,6 +39,7 @@
 
 #include "core/grid/Loop.h"
 #include "ice/IceAdvection.h"
+#include "ice/Exchange.h"
 #include "ice/IceComponent.h"
 #include "ice/RowLoop.h"
 
@@ -248,27 +249,42 @@ void IceComponent::mixture_face_pressure_work(double dt) {
 void IceComponent::add_mixture_face_pressure_work(std::size_t pi, double dt) {
   const Grid& g = setup_.grid;
   const double V = g.cell_volume();
-  for_each_cell(g.patches[pi].cells(), [&](int i, int j, int k) {
-    const IntVec3 c(i, j, k);
-    Vec3 grad_p;
+  const std::size_t nm = mats_.size();
+  const IndexRange cells = g.patches[pi].cells();
+  const int i0 = cells.lo[0], n = cells.hi[0] - i0;
+  // Row kernel: the cell fields share one offset per row; the face pressures
+  // of the low and high faces along d come from their own rows.
+  for_each_row(cells, [&](int j, int k) {
+    const std::size_t off0 = press_CC_[pi].offset(i0, j, k);
+    const double* pf_lo[3];
+    const double* pf_hi[3];
     for (int d = 0; d < 3; ++d) {
-      const GridArray<double>& pf = press_FC_.at(d, pi);
-      grad_p[d] = (pf(IntVec3(c + IntVec3::Unit(d))) - pf(c)) / g.dx[d];
+      const IntVec3 lo(i0, j, k), hi(lo + IntVec3::Unit(d));
+      pf_lo[d] = row_ptr(press_FC_.at(d, pi), lo);
+      pf_hi[d] = row_ptr(press_FC_.at(d, pi), hi);
     }
-    double corr = work_corr_[0][pi](c), mass_sum = 0;
-    for (std::size_t m = 0; m < mats_.size(); ++m) {
-      const IceMaterialFields& f = mats_[m];
-      // u_L = (Mu)_L / M_L before the exchange (vel_L_): with a model mass source the
-      // pre-source mass of a trace product would turn its momentum source into a huge velocity.
-      const Vec3 impulse = -dt * V * f.vol_frac_CC[pi](c) * grad_p;
-      corr -= impulse.dot(0.5 * (f.vel_CC[pi](c) + vel_L_[m][pi](c)));
-      mass_sum += mass_L_[m][pi](c);
-    }
-    for (std::size_t m = 0; m < mats_.size(); ++m) {
-      IceMaterialFields& f = mats_[m];
-      const double mass_L = mass_L_[m][pi](c);
-      f.int_eng_L_CC[pi](c) += corr * (mass_L / mass_sum);
-      temp_L_[m][pi](c) = f.int_eng_L_CC[pi](c) / (mass_L * cv_CC_[m][pi](c));
+    // int_eng_L_CC has no ghost layer (its own row pointer).
+    double* int_eng_L[kMaxExchangeMaterials];
+    for (std::size_t m = 0; m < nm; ++m) int_eng_L[m] = row_ptr(mats_[m].int_eng_L_CC[pi], i0, j, k);
+    for (int c = 0; c < n; ++c) {
+      const std::size_t off = off0 + c;
+      Vec3 grad_p;
+      for (int d = 0; d < 3; ++d) grad_p[d] = (pf_hi[d][c] - pf_lo[d][c]) / g.dx[d];
+      double corr = work_corr_[0][pi].data()[off], mass_sum = 0;
+      for (std::size_t m = 0; m < nm; ++m) {
+        const IceMaterialFields& f = mats_[m];
+        // u_L = (Mu)_L / M_L before the exchange (vel_L_): with a model mass source the
+        // pre-source mass of a trace product would turn its momentum source into a huge velocity.
+        const Vec3 impulse = -dt * V * f.vol_frac_CC[pi].data()[off] * grad_p;
+        corr -= impulse.dot(0.5 * (f.vel_CC[pi].data()[off] + vel_L_[m][pi].data()[off]));
+        mass_sum += mass_L_[m][pi].data()[off];
+      }
+      for (std::size_t m = 0; m < nm; ++m) {
+        const double mass_L = mass_L_[m][pi].data()[off];
+        double& eng = int_eng_L[m][c];
+        eng += corr * (mass_L / mass_sum);
+        temp_L_[m][pi].data()[off] = eng / (mass_L * cv_CC_[m][pi].data()[off]);
+      }
     }
   });
 }
@@ -277,15 +293,26 @@ void IceComponent::add_mixture_face_pressure_work(std::size_t pi, double dt) {
 // mom_L_CC is the Lagrangian momentum before the exchange, vel_L_ the velocity after it.
 void IceComponent::add_exchange_kinetic_energy_loss(std::size_t pi) {
   const Grid& g = setup_.grid;
-  for_each_cell(g.patches[pi].cells(), [&](int i, int j, int k) {
-    const IntVec3 c(i, j, k);
-    double loss = 0, mass_sum = 0;
-    for (std::size_t m = 0; m < mats_.size(); ++m) {
-      const double mass_L = mass_L_[m][pi](c);
-      loss += 0.5 * (mats_[m].mom_L_CC[pi](c).squaredNorm() / mass_L - mass_L * vel_L_[m][pi](c).squaredNorm());
-      mass_sum += mass_L;
+  const std::size_t nm = mats_.size();
+  const IndexRange cells = g.patches[pi].cells();
+  const int i0 = cells.lo[0], n = cells.hi[0] - i0;
+  // Row kernel: one offset per row, shared by the cell fields (same layout).
+  for_each_row(cells, [&](int j, int k) {
+    const std::size_t off0 = press_CC_[pi].offset(i0, j, k);
+    // mom_L_CC has no ghost layer (its own row pointer).
+    const Vec3* mom_L[kMaxExchangeMaterials];
+    for (std::size_t m = 0; m < nm; ++m) mom_L[m] = row_ptr(mats_[m].mom_L_CC[pi], i0, j, k);
+    for (int c = 0; c < n; ++c) {
+      const std::size_t off = off0 + c;
+      double loss = 0, mass_sum = 0;
+      for (std::size_t m = 0; m < nm; ++m) {
+        const double mass_L = mass_L_[m][pi].data()[off];
+        loss += 0.5 * (mom_L[m][c].squaredNorm() / mass_L -
+                       mass_L * vel_L_[m][pi].data()[off].squaredNorm());
+        mass_sum += mass_L;
+      }
+      for (std::size_t m = 0; m < nm; ++m) temp_L_[m][pi].data()[off] += loss / (mass_sum * cv_CC_[m][pi].data()[off]);
     }
-    for (std::size_t m = 0; m < mats_.size(); ++m) temp_L_[m][pi](c) += loss / (mass_sum * cv_CC_[m][pi](c));
   });
 }
 
@@ -294,13 +321,21 @@ void IceComponent::add_exchange_kinetic_energy_loss(std::size_t pi) {
 void IceComponent::add_mixture_advected_kinetic_energy_loss() {
   const Grid& g = setup_.grid;
   const double V = g.cell_volume();
-  for (std::size_t pi = 0; pi < g.patches.size(); ++pi)
-    for_each_cell(g.patches[pi].cells(), [&](int i, int j, int k) {
-      double mass_sum = 0;
-      for (const IceMaterialFields& f : mats_) mass_sum += f.rho_CC[pi](i, j, k) * V;
-      const double D = work_corr_[0][pi](i, j, k);
-      for (std::size_t m = 0; m < mats_.size(); ++m) mats_[m].temp_CC[pi](i, j, k) += D / (mass_sum * cv_CC_[m][pi](i, j, k));
+  const std::size_t nm = mats_.size();
+  for (std::size_t pi = 0; pi < g.patches.size(); ++pi) {
+    const IndexRange cells = g.patches[pi].cells();
+    const int i0 = cells.lo[0], n = cells.hi[0] - i0;
+    for_each_row(cells, [&](int j, int k) {
+      const std::size_t off0 = press_CC_[pi].offset(i0, j, k);
+      for (int c = 0; c < n; ++c) {
+        const std::size_t off = off0 + c;
+        double mass_sum = 0;
+        for (const IceMaterialFields& f : mats_) mass_sum += f.rho_CC[pi].data()[off] * V;
+        const double D = work_corr_[0][pi].data()[off];
+        for (std::size_t m = 0; m < nm; ++m) mats_[m].temp_CC[pi].data()[off] += D / (mass_sum * cv_CC_[m][pi].data()[off]);
+      }
     });
+  }
   for (std::size_t m = 0; m < mats_.size(); ++m) apply_state_bcs(m);
 }
 

@@ -103,7 +103,7 @@ struct IceSetup {
   bool clamp_sp_vol = false;
   // <conserveTotalEnergy> (Tephra extension, default true): return the
   // kinetic energy lost by the momentum advection and the face-pressure work
-  // to the internal energy (ice/IceEnergy.cpp, docs/ice.md). false: Uintah's
+  // to the internal energy (ice/IceEnergy.cpp, docs/algorithms/ice.md). false: Uintah's
   // energy equation.
   bool conserve_total_energy = true;
   // <Models><Model> and <CFD><ICE><ADD_HEAT> (ice/models/IceModel.h).

@@ -1,6 +1,6 @@
 // The phases of the explicit ICE step, in order. Equation numbers: Vaango
 // theory manual (ch. 24, 26); "Uintah" marks what the manual leaves open and
-// Uintah's explicit ICE (ICE.cc) fixes. See docs/ice.md.
+// Uintah's explicit ICE (ICE.cc) fixes. See docs/algorithms/ice.md.
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -327,7 +327,7 @@ void IceComponent::lagrangian_values_and_exchange(double dt) {
   const std::size_t nm = mats_.size();
   const double V = g.cell_volume();
   // Total-energy corrections (IceEnergy.cpp): one material, or a mixture of
-  // ICE materials with the cell's correction split by mass (docs/ice.md).
+  // ICE materials with the cell's correction split by mass (docs/algorithms/ice.md).
   const EnergyCorrection energy = energy_correction();
   if (energy == EnergyCorrection::Single) face_pressure_work(dt);
   if (energy == EnergyCorrection::Mixture) mixture_face_pressure_work(dt);

@@ -2,7 +2,7 @@
 // ICE::implicitPressureSolve / setupMatrix / setupRHS / updatePressure):
 // the face velocities depend on the end-of-step pressure, and the pressure
 // is found so that the volume fractions the faces move balance the
-// compressibility of the cell. docs/ice.md, "Implicit pressure".
+// compressibility of the cell. docs/algorithms/ice.md, "Implicit pressure".
 //
 // Unknown p (cell pressure). With kappa_m = v_m/c_m^2, A_m(u_f) the net
 // inflow of theta_m through the faces moved by the face velocities u_f(p)

@@ -72,8 +72,16 @@ class AddHeat final : public IceModel {
 // and the ICE step advects q with the material's mass fluxes (compatible
 // fluxes), so sum M q changes only by sum M src and by boundary fluxes.
 // Reduction "totalSum_scalar-<name>" = sum over interior cells of M q.
-// Not yet (exit 3): diffusivity != 0, exponentialDecay, interiorSources and
-// the non-uniform initialisations.
+// Diffusion (<constants><diffusivity> D, default 0): forward Euler on the
+// cell values with the 7-point Laplacian,
+//   src += dt D sum_d (q_{+d} - 2 q + q_{-d}) / dx_d^2,
+// so that where rho is uniform and the gas at rest q obeys q_t = D lap q
+// (the heat equation; zero-gradient extra cells make the walls no-flux).
+// Stable for dt <= 1 / (2 D sum_d 1/dx_d^2) (stable_timestep()). Sum M q is
+// conserved by it where rho is uniform (the Laplacian is a difference of
+// face fluxes); with varying rho only sum q is.
+// Not yet (exit 3): exponentialDecay, interiorSources and the non-uniform
+// initialisations.
 class PassiveScalar final : public IceModel {
  public:
   // Two layouts: Vaango's code reads <PassiveScalar><material/><scalar name>
@@ -104,8 +112,8 @@ class PassiveScalar final : public IceModel {
       ModelParams k(*c, "PassiveScalar <constants>");
       decay_ = k.number("decayRate", 0.0);
       if (decay_ < 0) c->require_child("decayRate").fail("decayRate must be >= 0");
-      if (k.number("diffusivity", 0.0) != 0.0)
-        c->require_child("diffusivity").missing_feature("PassiveScalar with diffusivity != 0");
+      diffusivity_ = k.number("diffusivity", 0.0);
+      if (diffusivity_ < 0) c->require_child("diffusivity").fail("diffusivity must be >= 0");
       k.accept("AMR_Refinement_Criteria");  // refinement flag only: no AMR in Tephra
       k.accept("initialize_diffusion_knob");
       k.finish();
@@ -147,8 +155,10 @@ class PassiveScalar final : public IceModel {
     src_ = CellScalars(g, 2);
     q_.fill(0.0);
     src_.fill(0.0);
+    // Every stored cell (ghosts too: the first step's diffusion reads the
+    // neighbours across patch boundaries before any halo exchange of q).
     for (std::size_t pi = 0; pi < g.patches.size(); ++pi)
-      for_each_cell_serial(g.patches[pi].cells_with_extra(), [&](int i, int j, int k) {
+      for_each_cell_serial(q_[pi].with_ghosts(), [&](int i, int j, int k) {
         const Vec3 x = g.lower + (Vec3(i, j, k) + Vec3::Constant(0.5)).cwiseProduct(g.dx);
         for (const Region& r : regions_)
           if (r.piece->inside(x)) {
@@ -160,8 +170,23 @@ class PassiveScalar final : public IceModel {
   void compute_sources(const IceModelInput& in, IceModelSources&) override {
     const Grid& g = in.grid;
     const double f = std::exp(-decay_ * in.dt) - 1.0;
+    const Vec3 w = in.dt * diffusivity_ * g.dx.cwiseProduct(g.dx).cwiseInverse();  // dt D / dx_d^2
     for (std::size_t pi = 0; pi < g.patches.size(); ++pi)
-      for_each_cell_serial(g.patches[pi].cells(), [&](int i, int j, int k) { src_[pi](i, j, k) = f * q_[pi](i, j, k); });
+      for_each_cell_serial(g.patches[pi].cells(), [&](int i, int j, int k) {
+        const auto& q = q_[pi];
+        double s = f * q(i, j, k);
+        if (diffusivity_ > 0) {
+          const double c = q(i, j, k);
+          s += w[0] * (q(i + 1, j, k) - 2 * c + q(i - 1, j, k)) + w[1] * (q(i, j + 1, k) - 2 * c + q(i, j - 1, k)) +
+               w[2] * (q(i, j, k + 1) - 2 * c + q(i, j, k - 1));
+        }
+        src_[pi](i, j, k) = s;
+      });
+  }
+  double stable_timestep() const override {
+    if (diffusivity_ <= 0 || !grid_) return std::numeric_limits<double>::infinity();
+    const Vec3& dx = grid_->dx;
+    return 0.5 / (diffusivity_ * (1 / (dx[0] * dx[0]) + 1 / (dx[1] * dx[1]) + 1 / (dx[2] * dx[2])));
   }
   std::vector<TransportedScalar> transported() override { return {{m_, &q_, &src_}}; }
   std::set<std::string> labels() const override { return {name_, "totalSum_" + name_}; }
@@ -186,6 +211,7 @@ class PassiveScalar final : public IceModel {
   std::size_t m_ = 0;
   std::string name_;
   double decay_ = 0;
+  double diffusivity_ = 0;
   const Grid* grid_ = nullptr;
   const std::vector<IceMaterialFields>* mats_ = nullptr;
   std::vector<Region> regions_;

@@ -1,4 +1,5 @@
 #pragma once
+#include <limits>
 // Models of <Models><Model type=...> (and <CFD><ICE><ADD_HEAT>) that add
 // per-cell sources of mass, momentum, energy and specific volume to the ICE
 // step, between named materials (Uintah's modelMass_src, modelMom_src,
@@ -73,6 +74,9 @@ class IceModel {
   virtual void initialize(const Grid& grid, const std::vector<IceMaterialFields>& mats) = 0;
   virtual void compute_sources(const IceModelInput& in, IceModelSources& out) = 0;
   virtual std::vector<TransportedScalar> transported() { return {}; }
+  // The largest stable time step of the model's own explicit terms (e.g. the
+  // forward-Euler limit of a scalar's diffusion); infinity when it has none.
+  virtual double stable_timestep() const { return std::numeric_limits<double>::infinity(); }
   // Output: labels it can save, the cell fields and the reduction sums.
   virtual std::set<std::string> labels() const { return {}; }
   virtual std::vector<ModelField> fields() const { return {}; }

@@ -61,6 +61,25 @@ TEST(IceExchange, TwoMaterialClosedFormAndConservation) {
 }
 
 // K -> infinity (1e15): one common velocity, sum theta rho u / sum theta rho.
+// The two-material closed form (Cramer's rule, exchange_detail::TwoByTwo)
+// and the general elimination solve the same 2 x 2 system: equal to round-off,
+// with and without the heat scale 1/c_v and with unequal C12, C21 entries.
+TEST(IceExchange, TwoMaterialClosedFormEqualsTheElimination) {
+  const double dt = 2e-4;
+  const std::vector<double> theta = {0.35, 0.65}, v = {0.9, 1.0 / 1.3}, scale = {1.0 / 716.0, 1.0 / 1000.0};
+  const std::vector<double> C = {0, 3e3, 5e3, 0};
+  for (const bool heat : {false, true}) {
+    const std::span<const double> s = heat ? std::span<const double>(scale) : std::span<const double>();
+    std::vector<double> x = {7.0, -3.0}, y = x;
+    solve_exchange(dt, theta, v, s, C, x);  // n = 2: closed form
+    double a[4];
+    exchange_detail::exchange_matrix(dt, theta, v, s, C, a);
+    std::span<double> b(y);
+    exchange_detail::solve_dominant(2, a, &b, 1);
+    for (int m = 0; m < 2; ++m) EXPECT_NEAR(x[m], y[m], 1e-14 * std::abs(y[m])) << "heat " << heat << " m " << m;
+  }
+}
+
 TEST(IceExchange, StiffLimitGivesTheMassWeightedVelocity) {
   std::vector<double> theta = {0.25, 0.75}, v = {1.0 / 8000.0, 1.0 / 1.2}, C = {0, 1e15, 1e15, 0};
   std::vector<double> ux = {0.0, 0.0}, uy = {5.0, -1.0}, uz = {0.0, 3.0};

@@ -7,7 +7,7 @@
 // reduction (.dat) or last frame holds a NaN or Inf; the deck's 0.25 completes;
 // every completed run is within 3x of the cfl 0.25 run's L1 density error
 // (in-process, below) and the first failure is reported. The observed limit is
-// recorded in docs/ice.md.
+// recorded in docs/algorithms/ice.md.
 #include <gtest/gtest.h>
 
 #include <cstdio>

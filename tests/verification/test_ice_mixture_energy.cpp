@@ -1,4 +1,4 @@
-// Total energy of a mixture of ICE materials (docs/ice.md "Total energy at
+// Total energy of a mixture of ICE materials (docs/algorithms/ice.md "Total energy at
 // shocks", mixtures; ice/IceEnergy.cpp): the cell's face-pressure-work and
 // DeBar corrections and the kinetic energy the momentum exchange removes,
 // split among the materials by mass.

@@ -1,4 +1,4 @@
-// ICE reaction and source models in full runs (ice/models/, docs/ice.md
+// ICE reaction and source models in full runs (ice/models/, docs/algorithms/ice.md
 // "Reactions").
 //
 // Chapman-Jouguet state of a barotropic product EOS. Both the JWLC products
@@ -85,7 +85,7 @@ const CellScalars& model_field(const IceComponent& ice, const std::string& label
 // above) from below as the cells shrink (a programmed burn at D ~ D_CJ drives
 // the products to the CJ state, smeared over the ~1.5-cell front): it rises
 // from 2 mm to 1 mm cells and stays within [0.8, 1.02] p_CJ. (The unchanged
-// deck to 12 us: 0.903 p_CJ, docs/ice.md.)
+// deck to 12 us: 0.903 p_CJ, docs/algorithms/ice.md.)
 struct LightTimeRun {
   double peak = 0;
 };
@@ -308,10 +308,10 @@ TEST(IceReactions, PassiveScalarBlobConservesItsIntegral) {
 // Stability sweep of <cfl> on the JWL++ ANFO detonation (the 60-cell, 3 cm
 // tube above with its open x+ end, run to 3 us, aggressive time step,
 // the deck's first-order advection; two materials, so Uintah's energy
-// equation: docs/ice.md "Total energy at shocks"). Each run either
+// equation: docs/algorithms/ice.md "Total energy at shocks"). Each run either
 // reaches 3 us with finite, positive states (check_state after every step) or
 // stops with NumericalFailure (exit 4 through tephra) naming the cell; any
-// other exception fails. Measured (docs/ice.md "Stability"): cfl 0.1 ... 1.2
+// other exception fails. Measured (docs/algorithms/ice.md "Stability"): cfl 0.1 ... 1.2
 // complete (no dt/2 restart; mass burned 3.46e-6 kg at 0.1, 3.32e-6 at 0.9,
 // 3.19e-6 at 1.2); 1.5, 2, 3 stop at steps 4, 3, 2 (a cell would lose more
 // than its content). The 1-D aggressive step dx/(c + |u|) with the cell's c

@@ -10,7 +10,7 @@
 // smeared over O(N^(1/2)) cells with first-order upwinding, so the density
 // error converges slower than the pressure error; Toro sec. 6.4). Observed
 // (N = 100/200/400/800, orders per doubling) with <conserveTotalEnergy>
-// (default; docs/ice.md "Total energy at shocks"): first order rho 0.59 0.64
+// (default; docs/algorithms/ice.md "Total energy at shocks"): first order rho 0.59 0.64
 // 0.64, p 0.78 0.78 0.82; second order rho 0.84 0.85 0.87, p 0.93 0.88 0.96,
 // asserted >= 0.8 for every doubling (the brief's target). Star states at
 // N = 800 (second order): p*, u*, rho*R within 0.01 %, rho*L -0.08 %
@@ -157,7 +157,7 @@ TEST(IceRiemann, ToroTest1ConvergesToTheExactSolution) {
 // Oracle: the runs finish (a non-positive rho_CC, temp_CC or sp_vol_CC stops
 // ICE with NumericalFailure) with rho_CC > 0 and press_CC > 0 in every cell
 // after every step, and the L1 errors of rho and p fall from N = 100 to 200.
-// Measured L1(rho) N = 100 -> 200 (docs/ice.md): 3: 0.21 -> 0.16 (first),
+// Measured L1(rho) N = 100 -> 200 (docs/algorithms/ice.md): 3: 0.21 -> 0.16 (first),
 // 0.10 -> 0.070 (second); 4: 0.91 -> 0.61, 0.51 -> 0.27; 5: 0.12 -> 0.083,
 // 0.13 -> 0.080. Without the energy correction tests 3-5 (second order) and 4
 // (both) did not converge (Toro 4 second order 2.41 -> 2.46).
@@ -180,7 +180,7 @@ const ToroCase kToro[] = {
 };
 
 // walls: symmetry (reflecting) ends instead of Neumann; conserve: the
-// <conserveTotalEnergy> value (docs/ice.md "Total energy at shocks").
+// <conserveTotalEnergy> value (docs/algorithms/ice.md "Total energy at shocks").
 std::string toro_case_deck(const ToroCase& c, int n, const char* advection, double cfl, bool walls = false,
                            bool conserve = true) {
   auto state = [](const GasState& s) {
@@ -265,7 +265,7 @@ double total_energy(const IceComponent& ice) {
 // (the shock has hit the right wall and runs back, the rarefaction has
 // reflected from the left wall). No energy crosses a wall (face velocity 0),
 // so E(t) = E(0) exactly; with <conserveTotalEnergy> each step changes E by
-// round-off only (the corrections are differences of face fluxes, docs/ice.md).
+// round-off only (the corrections are differences of face fluxes, docs/algorithms/ice.md).
 // Uintah's energy equation (false) loses a measured fraction, asserted > 1e-3
 // so that this test shows the difference.
 TEST(IceRiemann, ClosedShockTubeConservesTotalEnergyToRoundOff) {
@@ -322,7 +322,7 @@ TEST(IceRiemann, ToroTests2To5KeepDensityAndPressurePositive) {
 // N = 100, 200, 400, both orders: rho and p stay positive after every step,
 // the L1 errors of rho, u and p against the exact solution fall at every
 // doubling. Measured second order L1(rho) 0.0173/0.0095/0.0050, first order
-// 0.0363/0.0243/0.0159 (docs/ice.md). ICE's cell-centred
+// 0.0363/0.0243/0.0159 (docs/algorithms/ice.md). ICE's cell-centred
 // velocity empties the centre cells far below rho* (min rho ~1e-6 at second
 // order, ~1e-4 at first): the positivity is the point of this test, the
 // centre's density is the scheme's known weakness (Toro sec. 6.4 "the 123

@@ -1,4 +1,4 @@
-// ICE source models in full runs of a closed box (ice/models/, docs/ice.md
+// ICE source models in full runs of a closed box (ice/models/, docs/algorithms/ice.md
 // "Reactions and source models").
 //
 // mass_momentum_energy_src in a closed uniform box of one ideal gas, all six
