@@ -19,6 +19,7 @@
 #include "mpm/Transfers.h"
 #include "mpm/UpdatedGridVelocity.h"
 #include "mpm/contact/ContactNormals.h"
+#include "mpm/loads/BodyForceStress.h"
 
 namespace tephra {
 
@@ -54,6 +55,10 @@ void MpmComponent::initialize() {
       for (std::size_t i = 0; i < m.particles.size(); ++i) column.insert(column.end(), h.initial.begin(), h.initial.end());
       m.particles.history.push_back(std::move(column));
     }
+    // <initialize_stress_using_body_force>: sigma, F and V of eqs. (1), (2) of mpm/loads/BodyForceStress.h.
+    if (setup_.flags.initialize_stress_using_body_force && m.body_force_surface)
+      initialize_stress_from_body_force(m.density, setup_.gravity, *m.body_force_surface, m.model->bulk_modulus(),
+                                        m.model->shear_modulus(), m.particles);
     m.F_old = m.particles.F;
     m.L.assign(m.particles.size(), Mat3::Zero());
     update_stress(m, 0, 0.0);  // sigma(F = I) = 0, and the initial wave speeds

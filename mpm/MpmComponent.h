@@ -46,6 +46,9 @@ struct MpmMaterial {
   Particles particles;
   NodeGrid grid;                        // this step's node fields (and g.* output)
   std::shared_ptr<const ManufacturedSolution> mms;  // <run_MMS_problem>, or null
+  // <constitutive_model><initialize_with_body_force>true: its <surface_reference_point>
+  // (used with <MPM><initialize_stress_using_body_force>; mpm/loads/BodyForceStress.h).
+  std::optional<Vec3> body_force_surface;
   Stencils stencils;                    // scratch of the step
   std::vector<Mat3> L;                  // velocity gradients of the step
   std::vector<Mat3> F_old;              // F_n of the step (the model's input)

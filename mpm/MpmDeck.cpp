@@ -32,6 +32,9 @@ ConstitutiveModelP parse_constitutive_model(const DeckNode& cm) {
     cm.fail("unknown constitutive_model type '" + type + "' (implemented: " + join(constitutive_model_types()) +
             ")");
   }
+  // Read by parse_material (mpm/loads/BodyForceStress.h), not by the model.
+  params.has("initialize_with_body_force");
+  params.has("surface_reference_point");
   params.check_all_used("constitutive_model type '" + type + "'");
   return model;
 }
@@ -56,6 +59,17 @@ MpmMaterial parse_material(const DeckNode& mat, int index, GeometryRegistry& geo
       if (!(m.density > 0.0)) c.fail("density must be > 0");
     } else if (c.name == "constitutive_model") {
       if (m.model) c.fail("a material has one <constitutive_model>");
+      if (c.get_bool("initialize_with_body_force", false)) {
+        // Eq. (2) of mpm/loads/BodyForceStress.h is isotropic linear elasticity.
+        const std::string type = c.require_attribute("type");
+        if (type != "hypo_elastic" && type != "comp_neo_hook" && type != "comp_mooney_rivlin")
+          c.require_child("initialize_with_body_force")
+              .missing_feature("<initialize_with_body_force> for constitutive_model type '" + type +
+                               "' (implemented: hypo_elastic, comp_neo_hook, comp_mooney_rivlin)");
+        m.body_force_surface = c.get_vec3("surface_reference_point");
+      } else if (c.has_child("surface_reference_point")) {
+        c.require_child("surface_reference_point").fail("<surface_reference_point> needs <initialize_with_body_force>true");
+      }
       m.model = parse_constitutive_model(c);
     } else if (c.name == "thermal_conductivity") {
       m.thermal_conductivity = c.as_double();
@@ -151,6 +165,7 @@ std::unique_ptr<MpmComponent> make_mpm_component(const Deck& deck) {
   for (MpmMaterial& m : setup.materials)
     m.bcs.set_extra_nodes = setup.flags.interpolator.kind != InterpolatorKind::Linear;
   if (!setup.flags.mms.empty()) attach_manufactured_solution(root.require_child("MPM"), setup);
+  check_body_force_stress(deck, setup);
   return std::make_unique<MpmComponent>(std::move(setup));
 }
 

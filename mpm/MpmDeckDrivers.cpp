@@ -3,6 +3,7 @@
 #include <optional>
 #include <string>
 
+#include "core/base/Log.h"
 #include "core/deck/DeckLoader.h"
 #include "core/deck/DeckNode.h"
 #include "mpm/MpmComponent.h"
@@ -59,6 +60,26 @@ void read_loads_and_drivers(const Deck& deck, MpmSetup& setup) {
   if ((setup.grid.periodic.array() != 0).any() && setup.flags.interpolator.kind != InterpolatorKind::Linear)
     root.require_child("Grid").missing_feature("periodic MPM with the '" + interpolator_name(setup.flags.interpolator.kind) +
                               "' interpolator (implemented: linear)");
+}
+
+void check_body_force_stress(const Deck& deck, MpmSetup& setup) {
+  bool any = false;
+  for (const MpmMaterial& m : setup.materials) any = any || m.body_force_surface.has_value();
+  if (!setup.flags.initialize_stress_using_body_force) {
+    if (any)
+      log::warning("a material asks <initialize_with_body_force> but <MPM><initialize_stress_using_body_force> "
+                   "is not true: its particles start unstressed (as in Vaango)");
+    return;
+  }
+  const DeckNode& flag = deck.root.require_child("MPM").require_child("initialize_stress_using_body_force");
+  if (!any)
+    log::warning(flag.file + ":" + std::to_string(flag.line) +
+                 ": <initialize_stress_using_body_force> has no effect: no material has "
+                 "<initialize_with_body_force>true (as in Vaango)");
+  if (setup.rotating_frame) flag.missing_feature("<initialize_stress_using_body_force> with a rotating frame");
+  if (!setup.flags.mms.empty()) flag.missing_feature("<initialize_stress_using_body_force> with <run_MMS_problem>");
+  if (setup.flags.use_prescribed_deformation)
+    flag.missing_feature("<initialize_stress_using_body_force> with a prescribed deformation");
 }
 
 void check_driver_combinations(const Deck& deck, MpmSetup& setup) {

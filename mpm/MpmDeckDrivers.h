@@ -15,4 +15,9 @@ void read_loads_and_drivers(const Deck& deck, MpmSetup& setup);
 // After the materials and contact are read: combinations not implemented.
 void check_driver_combinations(const Deck& deck, MpmSetup& setup);
 
+// <initialize_stress_using_body_force> and the materials' <initialize_with_body_force>:
+// warnings when one is set without the other (no effect, as in Vaango), MissingFeature
+// with a rotating frame, MMS or a prescribed deformation (mpm/loads/BodyForceStress.h).
+void check_body_force_stress(const Deck& deck, MpmSetup& setup);
+
 }  // namespace tephra

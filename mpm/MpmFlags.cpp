@@ -44,7 +44,6 @@ const std::map<std::string, std::string>& physics_defaults() {
       {"manual_new_material", "false"},
       {"DoImplicitHeatConduction", "false"},
       {"UseGradientEnhancedVelocityProjection", "false"},
-      {"initialize_stress_using_body_force", "false"},
       {"InsertParticles", "false"},
       {"minimum_mass_for_acc", "0"},
       {"use_CBDI_boundary_condition", "false"},
@@ -134,6 +133,11 @@ MpmFlags parse_mpm_flags(const DeckNode* mpm) {
     if (c.name == "artificial_viscosity") { flags.artificial_viscosity = c.as_bool(); continue; }
     if (c.name == "artificial_viscosity_heating") { flags.artificial_viscosity_heating = c.as_bool(); continue; }
     if (c.name == "use_load_curves") { flags.use_load_curves = c.as_bool(); continue; }
+    // mpm/loads/BodyForceStress.h; the materials opt in (checked in make_mpm_component).
+    if (c.name == "initialize_stress_using_body_force") {
+      flags.initialize_stress_using_body_force = c.as_bool();
+      continue;
+    }
     if (c.name == "axisymmetric") { flags.axisymmetric = c.as_bool(); continue; }
     if (c.name == "test_for_neg_temps_mpm" || c.name == "testForNegTemps_mpm") {
       flags.test_for_negative_temperatures = c.as_bool();

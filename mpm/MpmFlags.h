@@ -53,6 +53,9 @@ struct MpmFlags {
   ErosionAlgorithm erosion = ErosionAlgorithm::None;
   // <use_load_curves>: accepted; loads (<PhysicalBC>) are checked in MpmDeck.
   bool use_load_curves = false;
+  // <initialize_stress_using_body_force>: start the opted-in materials in the
+  // stress that balances gravity (mpm/loads/BodyForceStress.h).
+  bool initialize_stress_using_body_force = false;
   // <deformation_gradient algorithm=...>: how F_{n+1} follows from l and F_n
   // (Vaango DeformationGradientComputer): first_order F = (I + dt l) F_n;
   // subcycling, taylor_series, cayley_hamilton with <num_terms> (Vaango's

@@ -234,8 +234,13 @@ ParticleLoads parse_particle_loads(const DeckNode* physical_bc, bool use_load_cu
         else
           log::warning(bc.file + ":" + std::to_string(bc.line) +
                        ": <heat_flux> load ignored: Vaango applies load curves only with <MPM><use_load_curves>true");
-      } else if (bc.name == "moment" ||
-                 bc.name == "arches_heat_flux") {
+      } else if (bc.name == "moment") {
+        MomentSurface m = parse_moment_surface(bc);
+        if (use_load_curves) loads.moment.push_back(std::move(m));
+        else
+          log::warning(bc.file + ":" + std::to_string(bc.line) +
+                       ": <moment> load ignored: Vaango applies load curves only with <MPM><use_load_curves>true");
+      } else if (bc.name == "arches_heat_flux") {
         bc.missing_feature("MPM physical boundary condition <" + bc.name + ">");
       } else {
         bc.fail("unknown element <" + bc.name + "> in <PhysicalBC><MPM> (known: pressure, force, velocity, "
@@ -302,6 +307,7 @@ void apply_particle_loads(const ParticleLoads& loads, double t, const Vec3& h,
       p.external_force[i] = f;
     }
   }
+  add_moment_forces(loads.moment, t, h, materials);
 }
 
 }  // namespace tephra

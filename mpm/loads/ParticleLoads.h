@@ -36,6 +36,7 @@
 #include "core/base/Types.h"
 #include "mpm/Particles.h"
 #include "mpm/loads/LoadCurve.h"
+#include "mpm/loads/MomentLoad.h"
 
 namespace tephra {
 
@@ -91,7 +92,13 @@ struct ParticleLoads {
   // thermal energy sum m c_v T grows by q A dt per step exactly. Positive q
   // heats. Empty unless <use_load_curves>.
   std::vector<PressureSurface> heat_flux;
-  bool empty() const { return pressure.empty() && force.empty() && velocity.empty() && heat_flux.empty(); }
+  // <moment> (Vaango's MomentBC, mpm/loads/MomentLoad.h): a couple M(t) as
+  // particle forces linear in the distance from a neutral plane. Empty
+  // unless <use_load_curves>.
+  std::vector<MomentSurface> moment;
+  bool empty() const {
+    return pressure.empty() && force.empty() && velocity.empty() && heat_flux.empty() && moment.empty();
+  }
 };
 
 // For each particle of `p` (cell size h): the index in loads.velocity of the
@@ -102,13 +109,13 @@ std::vector<int> velocity_surface_of_particles(const ParticleLoads& loads, const
 // parse_scalar_load_curve otherwise.
 LoadCurve<Vec3> parse_vector_load_curve(const DeckNode& parent);
 
-// Reads <PhysicalBC> (may be null). <moment>,
+// Reads <PhysicalBC> (may be null).
 // <arches_heat_flux>, axisymmetric cylinder surfaces and a load-curve scaling
 // function other than 1 are MissingFeature; bad values are DeckError.
 ParticleLoads parse_particle_loads(const DeckNode* physical_bc, bool use_load_curves);
 
 // Sets p.external_force of every particle of `materials` at time t (cell size h):
-// zero, plus the force regions, plus the pressure surfaces.
+// zero, plus the force regions, plus the pressure surfaces, plus the moments.
 void apply_particle_loads(const ParticleLoads& loads, double t, const Vec3& h,
                           const std::vector<Particles*>& materials);
 

@@ -31,6 +31,12 @@ MmsRunResult run_axis_aligned(const MmsRunOptions& o) {
   DeckNode& box = child(child(child(root, "Grid"), "Level"), "Box");
   const std::string c = std::to_string(cells);
   child(box, "resolution").text = "[" + c + "," + c + "," + (o.planar ? std::string("1") : c) + "]";
+  if (o.planar && o.cubic_z) {
+    const Vec3 lo = box.get_vec3("lower"), up = box.get_vec3("upper");
+    char text[128];
+    std::snprintf(text, sizeof text, "[%.17g,%.17g,%.17g]", up[0], up[1], lo[2] + (up[0] - lo[0]) / cells);
+    child(box, "upper").text = text;
+  }
   DeckNode& mat = child(child(child(root, "MaterialProperties"), "MPM"), "material");
   const std::string r = std::to_string(particles_per_cell_dir);
   child(child(mat, "geom_object"), "res").text = "[" + r + "," + r + "," + (o.planar ? std::string("1") : r) + "]";
@@ -63,6 +69,21 @@ MmsRunResult run_axis_aligned(const MmsRunOptions& o) {
       cnt[b] += 1;
     }
     for (int b = 0; b < 4; ++b) std::printf("  band %d: rms %.3e (n %g)\n", b, std::sqrt(num[b] / cnt[b]), cnt[b]);
+  }
+  if (o.ring_outer > 0.0) {
+    const auto& m = comp->materials()[0];
+    const double h = comp->materials()[0].grid.h[0];
+    double num[4] = {0, 0, 0, 0};
+    for (std::size_t i = 0; i < m.particles.size(); ++i) {
+      const Vec3 X = m.particles.x[i] - m.particles.displacement[i];
+      const double R = std::hypot(X[0], X[1]);
+      const double dist = std::min(R - o.ring_inner, o.ring_outer - R) / h;  // cells to the nearest curved face
+      const int b = dist < 1 ? 0 : dist < 2 ? 1 : dist < 3 ? 2 : 3;
+      num[b] += m.particles.volume0[i] * (m.particles.displacement[i] - m.mms->displacement(X, t)).squaredNorm();
+      out.band_rms[b] += m.particles.volume0[i];
+      ++out.band_count[b];
+    }
+    for (int b = 0; b < 4; ++b) out.band_rms[b] = out.band_rms[b] > 0 ? std::sqrt(num[b] / out.band_rms[b]) : 0.0;
   }
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return out;

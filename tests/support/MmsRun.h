@@ -22,6 +22,13 @@ struct MmsRunOptions {
   double end_time = 0.02;       // the deck's maxTime
   int particles_per_cell_dir = 2;  // the deck's res [2,2,2]
   double timestep_multiplier = 0.0;  // 0: the deck's (0.2)
+  // planar decks: make the z cell as thick as an x cell (the deck's upper z
+  // set to (upper x - lower x) / cells), so that the cells stay cubes.
+  bool cubic_z = false;
+  // Ring decks (inputs/mpm/expanding_ring_mms.ups): the rms displacement
+  // error of the particles by their distance (in x cells) to the curved
+  // faces R = ring_inner, ring_outer: [0,1), [1,2), [2,3), >= 3 cells.
+  double ring_inner = 0.0, ring_outer = 0.0;
 };
 
 struct MmsRunResult {
@@ -29,6 +36,8 @@ struct MmsRunResult {
   double seconds = 0.0;  // wall time of initialize + steps
   long particles = 0;
   int steps = 0;
+  double band_rms[4] = {0, 0, 0, 0};  // with ring_outer > 0: see MmsRunOptions
+  long band_count[4] = {0, 0, 0, 0};
 };
 
 MmsRunResult run_axis_aligned(const MmsRunOptions& options);

@@ -113,7 +113,7 @@ TEST(MpmLoads, PressureNeedsLoadCurves) {
 
 TEST(MpmLoads, DeckErrorsAndMissingFeatures) {
   const std::string box = "<geom_object><box><min>[1,0,0]</min><max>[1,1,1]</max></box></geom_object>";
-  EXPECT_THROW(loads_of("<moment>" + box + kCurve + "</moment>"), MissingFeature);
+  EXPECT_THROW(loads_of("<moment>" + box + kCurve + "</moment>"), DeckError);  // no <normal_plane> (test_mpm_moment_load)
   EXPECT_THROW(loads_of("<pressure>" + box + kCurve +
                         "<load_curve_scaling_function>t*2</load_curve_scaling_function></pressure>"),
                MissingFeature);

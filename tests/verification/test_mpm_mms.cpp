@@ -107,8 +107,9 @@ TEST(MpmMmsConvergence, CpGimpSecondOrder) {
 // [2,2,2]), 8^3 -> 16^3: gimp 1.9093e-3 -> 5.2281e-4 (order 1.87) and
 // 3rdorderBS 2.5349e-3 -> 7.0259e-4 (1.85); without the fold 1.62 and 1.16
 // (3rdorderBS was then less accurate with 2 particles per cell than with 1).
-// The 16 -> 32 pair stalls at A = 0.05 (1.45, 1.54; cause 2 above) and takes
-// minutes, so only the first pair is checked.
+// The 16 -> 32 pair stalls at A = 0.05 (1.45, 1.57 with the committed fold:
+// 32^3 1.9170e-4, 2.3727e-4; cause 2 above) and takes minutes, so only the
+// first pair is checked.
 // cpti and 4thorderBS at 8^3 and 16^3 (the 32^3 runs take 15-16 s each, so
 // they stay in docs/mpm-convergence.md: cpti 3.7170e-3 before the symmetry
 // fold, 4thorderBS 1.1666e-3). Measured with these settings: cpti 1.1439e-2,
