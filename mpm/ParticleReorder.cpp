@@ -5,7 +5,7 @@
 namespace tephra {
 
 bool reorder_worthwhile(const ScatterOrder& o, std::size_t np) {
-  return o.built_for(np) && o.displaced * kReorderFraction > np;
+  return np >= kReorderMinParticles && o.built_for(np) && o.displaced * kReorderFraction > np;
 }
 
 void permute_particles(Particles& p, const std::vector<std::uint32_t>& order, std::vector<Mat3>& scratch) {

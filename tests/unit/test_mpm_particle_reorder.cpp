@@ -2,8 +2,8 @@
 //   * permute_particles moves EVERY column by the same permutation: after it,
 //     each particle's full state (all columns, every history component) is
 //     found exactly once, under its id, equal bit for bit to the state before;
-//   * a run that reorders gives, particle by particle (matched by id), the
-//     state of a run that does not, to round-off: only the order of the node
+//   * a run that reorders (4608 particles, above kReorderMinParticles) gives,
+//     particle by particle (matched by id), the state of a run that does not, to round-off: only the order of the node
 //     sums changes (measured after 60 steps: x 2.8e-16, v 8.5e-15, F 1.7e-15,
 //     stress 2.6e-14 of each field's largest value; bound 1e-12);
 //   * the reordering run leaves the columns in scatter order (few displaced),
@@ -20,6 +20,7 @@
 #include "core/io/OutputFrame.h"
 #include "mpm/MpmComponent.h"
 #include "mpm/ParticleReorder.h"
+#include "mpm/shape/ScatterOrder.h"
 
 namespace tephra {
 namespace {
@@ -81,6 +82,21 @@ TEST(MpmParticleReorder, PermutesEveryColumnTogether) {
   for (const auto& [id, k] : found) EXPECT_EQ(k, 1) << "id " << id;
 }
 
+// The rule: reorder when more than np / 16 particles are displaced, and only
+// from 4096 particles on (ParticleReorder.h).
+TEST(MpmParticleReorder, WhenToReorder) {
+  ScatterOrder o;
+  for (std::size_t np : {1000u, 4095u, 4096u, 8000u}) {
+    o.particles = np;
+    o.index.assign(np, 0u);
+    o.displaced = np / 16;  // exactly the line: not above it
+    EXPECT_FALSE(reorder_worthwhile(o, np)) << np;
+    o.displaced = np / 16 + 1;
+    EXPECT_EQ(reorder_worthwhile(o, np), np >= 4096) << np;
+    EXPECT_FALSE(reorder_worthwhile(o, np + 1)) << np;  // an order built for another count
+  }
+}
+
 // Two hypo-elastic blocks moving into each other across several cells (GIMP).
 std::string deck() {
   return "<Uintah_specification><MPM><interpolator>gimp</interpolator></MPM>"
@@ -122,7 +138,7 @@ TEST(MpmParticleReorder, SameStatesByIdAsTheUnorderedRun) {
   const DeckRun plain(false, kSteps), ordered(true, kSteps);
   const Particles &a = plain.p(), &b = ordered.p();
   ASSERT_EQ(a.size(), b.size());
-  ASSERT_GT(a.size(), 4096u);  // above the threaded-scatter limit
+  ASSERT_GE(a.size(), kReorderMinParticles);  // large enough to be reordered
   EXPECT_TRUE(std::is_sorted(a.id.begin(), a.id.end()));    // never reordered
   EXPECT_FALSE(std::is_sorted(b.id.begin(), b.id.end()));   // reordered
   std::map<long long, std::size_t> where;
