@@ -15,6 +15,7 @@
 #include "mpm/DeformationGradient.h"
 #include "mpm/StrainWork.h"
 #include "mpm/GridDamping.h"
+#include "mpm/ParticleReorder.h"
 #include "mpm/PressureStabilization.h"
 #include "mpm/Transfers.h"
 #include "mpm/UpdatedGridVelocity.h"
@@ -113,7 +114,7 @@ void MpmComponent::fail_particle(const MpmMaterial& m, std::size_t i, int step, 
 }
 
 // Stencils + P2G (Alg. 5) on a reset grid, with the grid BCs on v_g.
-void MpmComponent::interpolate_to_grid(MpmMaterial& m, int step, const char* phase) {
+void MpmComponent::interpolate_to_grid(MpmMaterial& m, int step, const char* phase, bool may_reorder) {
   PhaseTimers::Scope t(phase_timers(), "MPM: interpolate particles to grid");
   // The per-axis stencil form (Interpolator.h) for linear, gimp and
   // 3rdorderBS when every support is inside the grid, not axisymmetric and no
@@ -126,6 +127,15 @@ void MpmComponent::interpolate_to_grid(MpmMaterial& m, int step, const char* pha
                        ? compute_axisymmetric_stencils(m.particles, m.grid, m.stencils)
                        : compute_stencils(m.particles, m.grid, setup_.flags.interpolator, m.stencils);
   if (bad >= 0) fail_particle(m, std::size_t(bad), step, phase, "particle is outside the grid");
+  // Columns into the scatter order when enough particles changed block
+  // (mpm/ParticleReorder.h), then the stencils of the new order (index = identity).
+  // Not with MPMICE (its per-particle arrays are not permuted here).
+  if (axis_form && may_reorder && setup_.reorder_particles && !coupling_ &&
+      reorder_worthwhile(m.stencils.order, m.particles.size())) {
+    PhaseTimers::Scope r(phase_timers(), "MPM: reorder particles");
+    reorder_particles(m);
+    compute_axis_stencils(m.particles, m.grid, setup_.flags.interpolator, m.stencils);
+  }
   // The threaded scatters' particle order (compute_stencils / compute_axis_stencils build their own).
   if (!axis_form && setup_.flags.axisymmetric) order_scatter(m.grid, m.stencils);
   m.grid.reset();
@@ -135,6 +145,19 @@ void MpmComponent::interpolate_to_grid(MpmMaterial& m, int step, const char* pha
   // not for axisymmetric runs, whose r = 0 axis is not a plane mirror of the weights).
   if (!setup_.flags.axisymmetric) fold_symmetry_particle_sums(m.bcs, m.grid);
   m.bcs.apply(m.grid, m.grid.velocity);
+}
+
+void MpmComponent::reorder_particles(MpmMaterial& m) {
+  const std::vector<std::uint32_t>& order = m.stencils.order.index;
+  // F_old is dead here: step 9 swaps it with F and overwrites F (advance()); its memory is the scratch.
+  permute_particles(m.particles, order, m.F_old);
+  std::byte* scratch = reinterpret_cast<std::byte*>(m.F_old.data());
+  // L is dead too (step 9 recomputes it); the model outputs and the
+  // velocity-surface flags of this step (prescribe_surface_velocities) move with their particles.
+  permute_column(m.plastic_work, order, scratch);
+  permute_column(m.heating, order, scratch);
+  const std::size_t mi = std::size_t(&m - setup_.materials.data());
+  if (mi < surface_of_particle_.size()) permute_column(surface_of_particle_[mi], order, scratch);
 }
 
 // P2G + internal force (Alg. 5-6): the g.* fields of the initial state.
@@ -317,7 +340,7 @@ void MpmComponent::advance(double t, double dt, int step) {
   const bool velocity_surfaces = !setup_.loads.velocity.empty();
   if (velocity_surfaces) prescribe_surface_velocities(t);
   // 1-3. Body force (gravity) and external loads enter P2G: m_g, V_g, v_g, f_ext,g (Alg. 5, eq. 1.69).
-  for (MpmMaterial& m : mats) interpolate_to_grid(m, step, "interpolate particles to grid");
+  for (MpmMaterial& m : mats) interpolate_to_grid(m, step, "interpolate particles to grid", true);
   if (velocity_surfaces) find_surface_velocity_nodes(t);  // v_g = v(t_n) at the nodes they reach
   // MPMICE steps 1-6: node -> cell, equilibration, face velocities, pressure (mpmice/).
   if (coupling_) coupling_->after_interpolate_to_grid(t, dt, step);

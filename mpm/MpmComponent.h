@@ -70,6 +70,9 @@ struct MpmSetup {
   bool node_stress = true;  // P2G sums g.stressFS (NodeGrid::node_stress); false unless the deck saves it
                             // (always summed with a contact model: the friction contacts read it)
   bool thermal_contact = false;
+  // Keep the particle columns in the scatter order of the stencils
+  // (mpm/ParticleReorder.h); false: seeding order (tests compare the two).
+  bool reorder_particles = true;
   // Where and why heat conduction cannot run in this scene yet (periodic or
   // axisymmetric grids): a MissingFeature at the first step that conducts.
   std::optional<std::pair<SourceLocation, std::string>> conduction_unsupported;  // <MaterialProperties><MPM><thermal_contact/> (Vaango STThermalContact)
@@ -100,6 +103,8 @@ class MpmComponent final : public Component {
   const std::vector<MpmMaterial>& materials() const { return setup_.materials; }
   std::vector<MpmMaterial>& materials() { return setup_.materials; }
   const MpmSetup& setup() const { return setup_; }
+  // Particle columns kept in scatter order (MpmSetup::reorder_particles; tests compare on/off).
+  void set_particle_reordering(bool on) { setup_.reorder_particles = on; }
   // MPMICE: the coupled component's hooks into advance() (null: plain MPM).
   void set_coupling(MpmCoupling* coupling) { coupling_ = coupling; }
 
@@ -108,7 +113,10 @@ class MpmComponent final : public Component {
   double courant_number(const MpmMaterial& m, double dt) const;
   void project_to_grid(MpmMaterial& m, int step, const char* phase);
   void internal_force(MpmMaterial& m);
-  void interpolate_to_grid(MpmMaterial& m, int step, const char* phase);
+  void interpolate_to_grid(MpmMaterial& m, int step, const char* phase, bool may_reorder = false);
+  // Permutes every per-particle column of m (particles, step columns, the
+  // velocity-surface flags) into the scatter order of m.stencils (mpm/ParticleReorder.h).
+  void reorder_particles(MpmMaterial& m);
   void exchange_momentum(ContactStage stage, double t, double dt);
   void boundary_forces();
   void apply_loads(double t);

@@ -3,6 +3,8 @@
 
 #include "mpm/MpmComponent.h"
 
+#include <algorithm>
+
 namespace tephra {
 
 namespace {
@@ -87,6 +89,27 @@ void for_each_column(P& p, G& g, Fn&& fn) {
   fn("g.stress", g.stress);
 }
 
+// The block's particles in ascending id (positions, ids and every field's
+// per-particle values): the files do not depend on the storage order of the
+// columns (mpm/ParticleReorder.h). Seeding assigns ascending ids, so an
+// unreordered run writes exactly the storage order (nothing moves).
+void sort_by_id(ParticleBlock& b) {
+  const std::size_t n = b.id.size();
+  if (std::is_sorted(b.id.begin(), b.id.end())) return;
+  std::vector<std::size_t> order(n);
+  for (std::size_t i = 0; i < n; ++i) order[i] = i;
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t c) { return b.id[a] < b.id[c]; });
+  auto gather = [&](auto& column, std::size_t per) {
+    auto old = column;
+    for (std::size_t j = 0; j < n; ++j)
+      for (std::size_t k = 0; k < per; ++k) column[j * per + k] = old[order[j] * per + k];
+  };
+  gather(b.position, 1);
+  gather(b.id, 1);
+  for (FieldArray& f : b.fields)
+    if (f.values.size() == n * std::size_t(f.components)) gather(f.values, std::size_t(f.components));
+}
+
 std::string prefix(const MpmMaterial& m) { return "mpm.m" + std::to_string(m.index) + "."; }
 
 // Vaango's face names in the BndyForce_<face> / BndyContactArea_<face> labels.
@@ -144,6 +167,7 @@ void MpmComponent::fill_output(const std::set<std::string>& labels, OutputFrame&
       f.values = p.history[k];
       b.fields.push_back(std::move(f));
     }
+    sort_by_id(b);
     frame.particles.push_back(std::move(b));
 
     auto node = [&](const char* label, const auto& column) {

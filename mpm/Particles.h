@@ -1,5 +1,7 @@
 #pragma once
 // The particles of one MPM material, structure of arrays (DESIGN.md §2.4).
+// A new column must also be added to permute_particles (mpm/ParticleReorder.cpp),
+// remove_particles (mpm/ParticleDeletion.cpp) and the restart state (MpmComponentOutput.cpp).
 // Every column has one entry per particle; all columns have the same length.
 #include <cstddef>
 #include <vector>

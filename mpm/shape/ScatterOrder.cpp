@@ -27,6 +27,8 @@ void ScatterOrder::finish() {
     std::vector<std::uint32_t> next(start.begin(), start.end() - 1);
     for (std::size_t i = 0; i < np; ++i) index[next[key[i]]++] = std::uint32_t(i);
   }
+  displaced = 0;
+  for (std::size_t j = 0; j < np; ++j) displaced += index[j] != j;
   // The non-empty blocks, colour-major (the key numbering is colour-major).
   const std::size_t per_colour = std::size_t(blocks_y) * blocks_z;
   block.clear();

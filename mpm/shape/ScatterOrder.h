@@ -36,6 +36,7 @@ struct ScatterOrder {
   std::vector<std::uint32_t> key;     // scratch of the build: block key of each particle
   int width_y = 1, width_z = 1;       // block widths w in node rows
   int blocks_y = 1, blocks_z = 1;     // blocks per direction
+  std::size_t displaced = 0;          // particles with index[j] != j (0: the storage is in scatter order)
 
   bool built_for(std::size_t np) const { return particles == np && index.size() == np && np > 0; }
 
@@ -50,7 +51,7 @@ struct ScatterOrder {
     return std::uint32_t((c * blocks_z + bz) * blocks_y + by);
   }
   // Step 3: counting sort of the keys (stable: ascending index inside a
-  // block) into index / block / colour. O(np + blocks).
+  // block) into index / block / colour, and the count `displaced`. O(np + blocks).
   void finish();
 };
 
@@ -80,8 +81,14 @@ void for_each_scatter_particle(const ScatterOrder& o, std::size_t np, Body&& bod
 #ifdef _OPENMP
   threads = np >= min_parallel ? omp_get_max_threads() : 1;
 #endif
+  // Columns stored in scatter order (mpm/ParticleReorder.h): index[j] == j,
+  // the same visits without reading the index list.
+  const bool in_order = o.displaced == 0;
   if (threads == 1) {
-    for (std::size_t j = 0; j < np; ++j) body(std::size_t(index[j]));
+    if (in_order)
+      for (std::size_t j = 0; j < np; ++j) body(j);
+    else
+      for (std::size_t j = 0; j < np; ++j) body(std::size_t(index[j]));
     return;
   }
 #pragma omp parallel num_threads(threads)
@@ -89,8 +96,12 @@ void for_each_scatter_particle(const ScatterOrder& o, std::size_t np, Body&& bod
     const long first = long(o.colour[c]), last = long(o.colour[c + 1]);
     // The implicit barrier at the end of the loop: colour c is complete before c + 1 starts.
 #pragma omp for schedule(dynamic, 1)
-    for (long b = first; b < last; ++b)
-      for (std::uint32_t j = block[b]; j < block[b + 1]; ++j) body(std::size_t(index[j]));
+    for (long b = first; b < last; ++b) {
+      if (in_order)
+        for (std::uint32_t j = block[b]; j < block[b + 1]; ++j) body(std::size_t(j));
+      else
+        for (std::uint32_t j = block[b]; j < block[b + 1]; ++j) body(std::size_t(index[j]));
+    }
   }
 }
 
