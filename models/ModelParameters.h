@@ -35,6 +35,9 @@ class ModelParameters {
   // melt_temp, specific_heat, ...), which Vaango hands to sub-models as defaults;
   // `fallback` when absent or when there is no enclosing element.
   virtual double enclosing_double(const std::string& /*name*/, double fallback) const { return fallback; }
+  // A boolean flag of the deck's top-level <MPM> section (e.g. <DoThermalExpansion>, Vaango
+  // MPMFlags), `fallback` when absent or when the parameters do not come from a deck.
+  virtual bool mpm_flag(const std::string& /*name*/, bool fallback) const { return fallback; }
 };
 
 }  // namespace tephra

@@ -56,6 +56,13 @@ double DeckModelParameters::enclosing_double(const std::string& name, double fal
   return node_.parent ? node_.parent->get_double(name, fallback) : fallback;
 }
 
+bool DeckModelParameters::mpm_flag(const std::string& name, bool fallback) const {
+  const DeckNode* root = &node_;
+  while (root->parent) root = root->parent;
+  const DeckNode* mpm = root->child("MPM");
+  return mpm ? mpm->get_bool(name, fallback) : fallback;
+}
+
 void DeckModelParameters::check_all_used(const std::string& model_name) const {
   for (const auto& [name, b] : blocks_) b->check_all_used(model_name + " <" + name + ">");
   for (const DeckNode& c : node_.children) {

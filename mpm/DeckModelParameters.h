@@ -27,6 +27,7 @@ class DeckModelParameters final : public ModelParameters {
   const ModelParameters* block(const std::string& name) const override;
   std::string type_attribute() const override;
   double enclosing_double(const std::string& name, double fallback) const override;
+  bool mpm_flag(const std::string& name, bool fallback) const override;
 
   // DeckError at the first child that no get/has/block call asked for, also
   // inside every block a model opened.

@@ -5,6 +5,7 @@
 #include "core/base/Errors.h"
 #include "ice/IceComponent.h"
 #include "ice/models/IceModel.h"
+#include "models/plasticity/SubModelFamilies.h"
 #include "models/solid/ConstitutiveModel.h"
 #include "mpm/MpmComponent.h"
 #include "mpmice/MpmIceComponent.h"
@@ -31,10 +32,13 @@ std::vector<std::string> registered_keys(const std::string& family) {
       {"contact", [] { return mpm_contact_types(); }},
       {"interpolator", [] { return mpm_interpolators(); }},
   };
+  // The sub-model families of elastic_plastic(_hp) (models/plasticity/SubModelFamilies.h).
+  if (auto keys = plasticity_sub_model_keys(family)) return *keys;
   auto it = families.find(family);
   if (it == families.end()) {
     std::string known;
     for (const auto& [k, v] : families) known += " " + k;
+    for (const auto& k : plasticity_sub_model_families()) known += " " + k;
     throw UsageError("unknown family '" + family + "'; families:" + known);
   }
   return it->second();

@@ -1,32 +1,27 @@
 #include "mpmice/SolidEos.h"
 
 #include "core/base/Errors.h"
-#include "models/solid/CompNeoHookPlastic.h"
+#include "models/solid/ModifiedEos.h"
 
 namespace tephra {
 
 SolidEos::SolidEos(ConstitutiveModelP model, double density0, double p_ref, const DeckNode& where)
     : model_(std::move(model)), rho0_(density0), p_ref_(p_ref) {
-  if (!model_->pressure_at_density(rho0_, rho0_, 300.0)) {
-    // <useModifiedEOS> of comp_neo_hook_plastic / UCNH: the hook needs p_ref
-    // and is offered as modified_eos_pressure (CompNeoHookPlastic.h).
-    if (dynamic_cast<const CompNeoHookPlastic*>(model_.get()) != nullptr) {
-      modified_neo_hookean_ = true;
-    } else {
-      where.missing_feature("constitutive_model '" + model_->type() +
-                            "' in MPMICE (it has no pressure_at_density/density_at_pressure hooks yet)");
-    }
-  }
+  if (!model_->pressure_at_density(rho0_, rho0_, 300.0))
+    where.missing_feature("constitutive_model '" + model_->type() +
+                          "' in MPMICE (it has no pressure_at_density/density_at_pressure hooks yet)");
+  if (model_->modified_eos() && !(p_ref_ > 0.0))
+    where.fail("useModifiedEOS of constitutive_model '" + model_->type() +
+               "' needs a positive reference pressure (p = p_ref (rho/rho0)^(K/p_ref) in expansion)");
 }
 
+// The model's hooks, or with <useModifiedEOS> the expansion branch of models/solid/ModifiedEos.h.
 SolidEosPoint SolidEos::point(double rho, double T) const {
-  if (modified_neo_hookean_) return modified_eos_pressure(rho, rho0_, model_->bulk_modulus(), p_ref_);
-  return *model_->pressure_at_density(rho, rho0_, T);
+  return *mpmice_pressure_at_density(*model_, rho, rho0_, T, p_ref_);
 }
 
 double SolidEos::rho_at(double p_gauge, double T) const {
-  if (modified_neo_hookean_) return modified_eos_density(p_gauge, rho0_, model_->bulk_modulus(), p_ref_);
-  return *model_->density_at_pressure(p_gauge, rho0_, T);
+  return *mpmice_density_at_pressure(*model_, p_gauge, rho0_, T, p_ref_);
 }
 
 void SolidEos::evaluate(std::span<const double> rho, std::span<const double> T, std::span<EosState> out) const {

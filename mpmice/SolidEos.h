@@ -32,7 +32,6 @@ class SolidEos final : public EquationOfState {
   double rho_at(double p_gauge, double T) const;
   ConstitutiveModelP model_;
   double rho0_, p_ref_;
-  bool modified_neo_hookean_ = false;  // comp_neo_hook_plastic/UCNH <useModifiedEOS>: needs p_ref
 };
 
 }  // namespace tephra

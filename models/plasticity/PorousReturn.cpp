@@ -16,7 +16,7 @@ Eigen::Matrix3d stress_of(double q, double I1, const Eigen::Matrix3d& n) {
 }
 
 struct Eval {
-  double f, fq, fI1, sy, H;
+  double f, fq, fI1, sy, H, sigma_e;
 };
 
 Eval evaluate(const YieldCondition& y, const FlowStressModel& flow, const PorousReturnInput& in, double q, double I1,
@@ -24,12 +24,14 @@ Eval evaluate(const YieldCondition& y, const FlowStressModel& flow, const Porous
   PlasticState s = in.state;
   s.eps_p = in.state.eps_p + dep;
   s.eps_p_rate = in.dt > 0.0 ? dep / in.dt : 0.0;
+  // MTS (PorousReturn.h): sigma_e = sigma_e,n + theta(sigma_e,n) Delta eps_p; 0 for the other laws.
+  s.sigma_e = in.state.sigma_e + flow.internal_stress_rate(s) * dep;
   const FlowStress fs = flow.evaluate(s);
   const Eigen::Matrix3d sig = stress_of(q, I1, in.n_hat);
   const double phi = in.state.porosity;
   const Eigen::Matrix3d g = y.gradient(sig, fs.sigma_y, phi);
   return {y.value(sig, fs.sigma_y, phi), g.cwiseProduct(in.n_hat).sum() / kS32, g.trace() / 3.0, fs.sigma_y,
-          fs.d_eps_p};
+          fs.d_eps_p, s.sigma_e};
 }
 }  // namespace
 
@@ -128,6 +130,7 @@ PorousReturnResult porous_return(const YieldCondition& yield, const FlowStressMo
   res.delta_eps_p = u(3);
   res.sigma_y = e.sy;
   res.hardening = e.H;
+  res.sigma_e = e.sigma_e;
   res.f = e.f;
   res.stress = stress_of(u(0), u(1), in.n_hat);
   res.plastic_strain = u(2) * (e.fq * kS32 * in.n_hat + e.fI1 * Eigen::Matrix3d::Identity());

@@ -16,6 +16,9 @@
 // f_q = (∂f/∂σ : n̂)/sqrt(3/2), f_I1 = tr(∂f/∂σ)/3. Newton on the 4x4 system with a
 // forward-difference Jacobian and backtracking; φ and T are held at their t_n values
 // (porosity and temperature are updated after the return, as VT Algorithm 1 does).
+// A flow law with an internal stress (MTS, FlowStressModel::internal_stress_rate) evolves it
+// with the return as the von Mises returns do: σ_e = σ_e,n + θ(σ_e,n; ε̇_p, T) Δε_p
+// (σ_e,n = state.sigma_e), inside the residuals (the Jacobian's differences see it).
 #include <Eigen/Core>
 
 #include "models/plasticity/FlowStressModel.h"
@@ -40,6 +43,7 @@ struct PorousReturnResult {
   double delta_eps_p = 0.0;   // Δε_p
   double sigma_y = 0.0;       // σ_y at the returned state
   double hardening = 0.0;     // ∂σ_y/∂ε_p at the returned state
+  double sigma_e = 0.0;       // MTS structure stress at the returned state (state.sigma_e otherwise)
   double f = 0.0;             // yield function at the returned state
   Eigen::Matrix3d stress = Eigen::Matrix3d::Zero();        // (I1/3) I + sqrt(2/3) q n̂
   Eigen::Matrix3d plastic_strain = Eigen::Matrix3d::Zero();  // Δε^p

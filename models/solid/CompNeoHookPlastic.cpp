@@ -1,5 +1,7 @@
 #include "models/solid/CompNeoHookPlastic.h"
 
+#include "models/solid/ModifiedEos.h"
+
 #include <cmath>
 
 #include <Eigen/LU>
@@ -114,7 +116,6 @@ long CompNeoHookPlastic::update(const SolidUpdateInput& in, const SolidUpdateOut
 }
 
 std::optional<SolidEosPoint> CompNeoHookPlastic::pressure_at_density(double rho, double density0, double) const {
-  if (p_.use_modified_eos) return std::nullopt;  // needs p_ref: modified_eos_pressure
   const double K = p_.bulk_modulus;
   SolidEosPoint e;
   e.pressure = 0.5 * K * (rho / density0 - density0 / rho);
@@ -124,28 +125,21 @@ std::optional<SolidEosPoint> CompNeoHookPlastic::pressure_at_density(double rho,
 }
 
 std::optional<double> CompNeoHookPlastic::density_at_pressure(double p_gauge, double density0, double) const {
-  if (p_.use_modified_eos) return std::nullopt;  // needs p_ref: modified_eos_density
   const double q = p_gauge / p_.bulk_modulus;
   return density0 * (q + std::sqrt(q * q + 1.0));
 }
 
 SolidEosPoint modified_eos_pressure(double rho, double density0, double K, double p_ref) {
+  if (rho < density0) return modified_eos_expansion(rho, density0, K, p_ref);
   SolidEosPoint e;
-  if (rho < density0) {
-    const double n = K / p_ref;
-    const double rn = std::pow(rho / density0, n);
-    e.pressure = p_ref * rn - p_ref;
-    e.dp_drho = (K / rho) * rn;
-  } else {
-    e.pressure = 0.5 * K * (rho / density0 - density0 / rho);
-    e.dp_drho = 0.5 * K * (1.0 / density0 + density0 / (rho * rho));
-  }
+  e.pressure = 0.5 * K * (rho / density0 - density0 / rho);
+  e.dp_drho = 0.5 * K * (1.0 / density0 + density0 / (rho * rho));
   e.c2 = e.dp_drho;
   return e;
 }
 
 double modified_eos_density(double p_gauge, double density0, double K, double p_ref) {
-  if (p_gauge < 0.0) return density0 * std::pow((p_gauge + p_ref) / p_ref, p_ref / K);
+  if (p_gauge < 0.0) return modified_eos_expansion_density(p_gauge, density0, K, p_ref);
   const double q = p_gauge / K;
   return density0 * (q + std::sqrt(q * q + 1.0));
 }

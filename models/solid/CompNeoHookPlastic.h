@@ -35,8 +35,9 @@
 // MPMICE hooks: the standard EOS as comp_neo_hook. <useModifiedEOS> (Vaango
 // UCNH::computePressEOSCM): for rho < rho0 the absolute pressure is
 // p = p_ref (rho/rho0)^n, n = K/p_ref, which depends on the run's reference
-// pressure; the generic hooks (no p_ref argument) then return std::nullopt, and
-// the MPMICE coupling calls modified_eos_pressure/density with p_ref instead.
+// pressure: modified_eos() is true, the hooks give the standard (compression)
+// branch and MPMICE adds the expansion branch (models/solid/ModifiedEos.h, the
+// same mechanism as the metal models and visco_scram).
 //
 // MissingFeature: useDamage, useInitialStress, yield_distrib other than
 // "constant", an <equation_of_state> other than Vaango's default.
@@ -75,6 +76,7 @@ class CompNeoHookPlastic final : public ConstitutiveModel {
 
   std::optional<SolidEosPoint> pressure_at_density(double rho, double density0, double T) const override;
   std::optional<double> density_at_pressure(double p_gauge, double density0, double T) const override;
+  bool modified_eos() const override { return p_.use_modified_eos; }
 
   // The point update. hist = {bbar_e (9, row-major), alpha}, read at t_n and
   // overwritten with t_{n+1}. Returns false for an inadmissible state.

@@ -108,6 +108,10 @@ class ConstitutiveModel {
                                                     double /*T*/) const {
     return std::nullopt;
   }
+  // <useModifiedEOS> (Vaango computePressEOSCM/computeRhoMicroCM of UCNH, ElasticPlastic(HP),
+  // ViscoScram): in expansion (rho < rho0) MPMICE takes p = p_ref (rho/rho0)^n instead of the
+  // hooks above, which then give the compression branch (models/solid/ModifiedEos.h).
+  virtual bool modified_eos() const { return false; }
 };
 
 using ConstitutiveModelP = std::shared_ptr<const ConstitutiveModel>;

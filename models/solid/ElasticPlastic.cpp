@@ -225,6 +225,7 @@ bool ElasticPlastic::update_point(const Eigen::Matrix3d& F_old, const Eigen::Mat
           porous_tangent = yield_continuum_tangent(*yield_, r.stress, r.sigma_y, r.hardening, st.porosity, kappa, mu);
         }
         hist[k_evp_] += tr_dp;
+        if (k_sigma_e_ >= 0) hist[k_sigma_e_] = r.sigma_e;  // MTS: sigma_e of the return (PorousReturn.h)
         if (eos_->type() == "default_hypo") {
           p_mech = r.I1 / 3.0 + 3.0 * kappa * p_.alpha * (T - T0);  // p_tr - kappa tr(Delta eps^p)
         } else {
@@ -315,6 +316,7 @@ ConstitutiveModelP ElasticPlastic::create(const ModelParameters& params) {
   if (!(p.shear_modulus > 0.0)) params.fail("shear_modulus", "must be > 0");
   p.alpha = params.get_double("coeff_thermal_expansion", 1.0e-5);
   if (!(p.alpha >= 0.0)) params.fail("coeff_thermal_expansion", "must be >= 0");
+  if (!params.mpm_flag("DoThermalExpansion", true)) p.alpha = 0.0;  // Vaango: alpha = 0 unless the MPM flag
   p.taylor_quinney = params.get_double("taylor_quinney_coeff", 0.9);
   if (!(p.taylor_quinney >= 0.0 && p.taylor_quinney <= 1.0)) params.fail("taylor_quinney_coeff", "must be in [0, 1]");
   p.tolerance = params.get_double("tolerance", 1.0e-10);
@@ -323,8 +325,7 @@ ConstitutiveModelP ElasticPlastic::create(const ModelParameters& params) {
   p.do_melting = params.get_bool("do_melting", true);
   p.compute_specific_heat = params.get_bool("compute_specific_heat", false);
   params.get_double("initial_material_temperature", 294.0);  // Vaango hands it to no law of this model
-  if (params.get_bool("useModifiedEOS", false))
-    params.missing_feature("useModifiedEOS", "elastic_plastic with useModifiedEOS = true");
+  p.use_modified_eos = params.get_bool("useModifiedEOS", false);
 
 
   SubModelContext ctx;
@@ -388,9 +389,6 @@ ConstitutiveModelP ElasticPlastic::create(const ModelParameters& params) {
     m->kin_ = kin;
     m->k_beta_ = k++;
   }
-  if (m->yield_ && m->mts_)
-    params.missing_feature("flow_model", name + " MTS flow (sigma_e history) with yield_condition '" + yield->type() +
-                                             "' (the two-invariant return does not integrate sigma_e)");
   m->history_count_ = k;
   return m;
 }

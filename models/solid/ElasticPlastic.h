@@ -56,7 +56,12 @@
 // the backstress history column is "backStress" (unrotated frame). Heating uses sigma_y (18.20),
 // the plastic work sigma : Delta eps^p; the stability tangent adds the kinematic modulus
 // H_1 - 3/2 H_2 beta : n (KinematicHardeningModel::j2_modulus).
-// MissingFeature: kinematic hardening or MTS with a porous yield, useModifiedEOS.
+// <useModifiedEOS>: only the MPMICE hooks change (as in Vaango): in expansion p = p_ref
+// (rho/rho0)^(K0/p_ref), K0 the EOS sub-model's tangent at J = 1 (models/solid/ModifiedEos.h).
+// <coeff_thermal_expansion> is set to 0 when the deck's <MPM><DoThermalExpansion> is false
+// (Vaango MPMFlags, default true).
+// MTS with a porous yield: sigma_e inside the two-invariant return (PorousReturn.h).
+// MissingFeature: kinematic hardening with a porous yield.
 #include <memory>
 
 #include "models/plasticity/FlowStressModel.h"
@@ -78,6 +83,7 @@ struct ElasticPlasticParams {
   bool do_melting = true;         // <do_melting>: s = 0 once T > T_m
   bool compute_specific_heat = false;  // <compute_specific_heat>: C_p from <specific_heat_model>
   double specific_heat = 0.0;     // the material's <specific_heat> (used otherwise) [J/(kg K)]
+  bool use_modified_eos = false;  // <useModifiedEOS>: MPMICE expansion branch (models/solid/ModifiedEos.h)
 };
 
 class ElasticPlastic final : public ConstitutiveModel {
@@ -93,6 +99,7 @@ class ElasticPlastic final : public ConstitutiveModel {
   // default_hypo integrated to p = K ln J; the thermal term of VT 18.81 is left out).
   std::optional<SolidEosPoint> pressure_at_density(double rho, double density0, double T) const override;
   std::optional<double> density_at_pressure(double p_gauge, double density0, double T) const override;
+  bool modified_eos() const override { return p_.use_modified_eos; }
 
   // The backward-Euler J2 return of one point (public for the unit tests).
   struct Return {

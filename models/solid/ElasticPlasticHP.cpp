@@ -19,7 +19,7 @@ namespace tephra {
 
 namespace {
 enum HistoryIndex { kEpsP = 0, kEpsPRate = 1, kPorosity = 2, kDamage = 3, kLocalized = 4, kHistoryCount = 5 };
-constexpr int kMaxHistory = kHistoryCount + 3 + 9;  // + plasticVolumetricStrain, initialFieldsDrawn, mtsStructureStress, backStress
+constexpr int kMaxHistory = kHistoryCount + 5 + 9;  // + plasticVolumetricStrain, initialFieldsDrawn, T_0, T_last, mtsStructureStress, backStress
 }  // namespace
 
 std::vector<HistoryVariable> ElasticPlasticHP::history() const {
@@ -34,6 +34,10 @@ std::vector<HistoryVariable> ElasticPlasticHP::history() const {
     h.push_back({"plasticVolumetricStrain", 1, {0.0}, "ln J^p = sum of tr(Delta eps^p) (porous yield only) [-]"});
   if (k_drawn_ >= 0)
     h.push_back({"initialFieldsDrawn", 1, {0.0}, "1 once the Gaussian initial porosity/damage is drawn"});
+  if (k_T0_ >= 0) {
+    h.push_back({"thermalReferenceTemperature", 1, {0.0}, "T_0 of the thermal pressure, set at the first update [K]"});
+    h.push_back({"lastTemperature", 1, {0.0}, "temperature of the last update [K]"});
+  }
   if (k_sigma_e_ >= 0) h.push_back({"mtsStructureStress", 1, {0.0}, "MTS evolving structure stress sigma_e [Pa]"});
   if (k_beta_ >= 0)
     h.push_back({"backStress", 9, std::vector<double>(9, 0.0),
@@ -55,13 +59,25 @@ bool ElasticPlasticHP::update_point(const Eigen::Matrix3d& F_old, const Eigen::M
   const double p_n = tau_n.trace() / 3.0;
   const Eigen::Matrix3d s_n = tau_n - p_n * I;
 
-  // Volumetric part: the EOS gives the mean stress (VT ch. 6).
+  // Thermal reference T_0 (first update) and the last temperature (rate-form EOS).
+  double T0 = T, T_last = T;
+  if (k_T0_ >= 0) {
+    if (!(hist[k_T0_] > 0.0)) hist[k_T0_] = hist[k_Tprev_] = T;
+    T0 = hist[k_T0_];
+    T_last = hist[k_Tprev_];
+    hist[k_Tprev_] = T;
+  }
+
+  // Volumetric part: the EOS gives the mechanical mean stress (VT ch. 6) at J^e = J/J^p.
   EosInput ei;
-  ei.J = k_evp_ >= 0 ? J * std::exp(-hist[k_evp_]) : J;  // elastic volume ratio J^e = J/J^p
-  ei.p_old = p_n;
+  ei.J = k_evp_ >= 0 ? J * std::exp(-hist[k_evp_]) : J;
+  ei.p_old = p_n + 3.0 * eos_->bulk_modulus() * p_.alpha * (T_last - T0);  // the mechanical part at t_n
   ei.dt = dt;
   ei.trace_d = dt > 0.0 ? de.trace() / dt : 0.0;
   const EosResult eos = eos_->evaluate(ei);
+  // Thermal pressure 3 κ α (T - T_0) (header; VT eq. 17.3-17.5, 18.12), κ = J^e dp/dJ^e.
+  const double kappa_th = ei.J * eos.dp_dJ > 0.0 ? ei.J * eos.dp_dJ : eos_->bulk_modulus();
+  const double p_th = 3.0 * kappa_th * p_.alpha * (T - T0);
 
   PlasticState st;
   st.eps_p = hist[kEpsP];
@@ -69,7 +85,7 @@ bool ElasticPlasticHP::update_point(const Eigen::Matrix3d& F_old, const Eigen::M
   st.temperature = T;
   st.density0 = density0;
   st.density = density0 / J;
-  st.pressure = -eos.p;
+  st.pressure = -(eos.p - p_th);
   st.porosity = hist[kPorosity];
   st.sigma_e = k_sigma_e_ >= 0 ? hist[k_sigma_e_] : 0.0;
   const double sigma_e_n = st.sigma_e;
@@ -81,7 +97,7 @@ bool ElasticPlasticHP::update_point(const Eigen::Matrix3d& F_old, const Eigen::M
   const Eigen::Matrix3d s_trial = s_n + 2.0 * mu * (de - (de.trace() / 3.0) * I);
   const double q_trial = std::sqrt(1.5 * s_trial.squaredNorm());
   Eigen::Matrix3d s = s_trial;
-  double delta = 0.0, H = 0.0, mean = eos.p, work = 0.0, tr_dp = 0.0;
+  double delta = 0.0, H = 0.0, mean = eos.p - p_th, work = 0.0, tr_dp = 0.0;
   Eigen::Matrix3d xi = s_trial;  // returned stress relative to the backstress (flow direction of the tangent)
   std::optional<Tangent4> porous_tangent;  // porous yield with a stability check only
   Eigen::Matrix3d porous_dp = Eigen::Matrix3d::Zero();
@@ -94,7 +110,7 @@ bool ElasticPlasticHP::update_point(const Eigen::Matrix3d& F_old, const Eigen::M
     const double kt = ei.J * eos.dp_dJ;
     PorousReturnInput pr;
     pr.q_trial = q_trial;
-    pr.I1_trial = 3.0 * eos.p;
+    pr.I1_trial = 3.0 * mean;
     pr.n_hat = unit_deviator(s_trial);
     pr.K = kt > 0.0 ? kt : eos_->bulk_modulus();
     pr.mu = mu;
@@ -114,9 +130,10 @@ bool ElasticPlasticHP::update_point(const Eigen::Matrix3d& F_old, const Eigen::M
         porous_tangent = yield_continuum_tangent(*yield_, r.stress, r.sigma_y, r.hardening, st.porosity, pr.K, mu);
       }
       hist[k_evp_] += tr_dp;
+      if (k_sigma_e_ >= 0) hist[k_sigma_e_] = r.sigma_e;  // MTS: sigma_e of the return (PorousReturn.h)
       // Mean stress: exact for the rate form (p_tr - K tr Δε^p); others at the new J^e.
       ei.J = J * std::exp(-hist[k_evp_]);
-      mean = eos_->type() == "default_hypo" ? r.I1 / 3.0 : eos_->evaluate(ei).p;
+      mean = eos_->type() == "default_hypo" ? r.I1 / 3.0 : eos_->evaluate(ei).p - p_th;
     }
   } else if (dt > 0.0 && mu > 0.0) {
     // Von Mises return on ξ = s - β (header comment; β = 0 without kinematic hardening).
@@ -229,11 +246,11 @@ ConstitutiveModelP ElasticPlasticHP::create(const ModelParameters& params) {
   if (!(p.tolerance > 0.0)) params.fail("tolerance", "must be > 0");
   p.isothermal = params.get_bool("isothermal", false);
   p.do_melting = params.get_bool("do_melting", true);  // Vaango's default
-  params.get_double("initial_material_temperature", 0.0);  // Vaango: reference of the thermal strain (alpha = 0 here)
-  if (params.get_double("coeff_thermal_expansion", 0.0) != 0.0)
-    params.missing_feature("coeff_thermal_expansion", "elastic_plastic_hp thermal expansion strain (alpha != 0)");
-  if (params.get_bool("useModifiedEOS", false))
-    params.missing_feature("useModifiedEOS", "elastic_plastic_hp with useModifiedEOS = true");
+  params.get_double("initial_material_temperature", 0.0);  // Vaango: unused in the explicit update (T_0: first T)
+  p.alpha = params.get_double("coeff_thermal_expansion", 0.0);
+  if (!(p.alpha >= 0.0)) params.fail("coeff_thermal_expansion", "must be >= 0");
+  if (!params.mpm_flag("DoThermalExpansion", true)) p.alpha = 0.0;  // Vaango: alpha = 0 unless the MPM flag
+  p.use_modified_eos = params.get_bool("useModifiedEOS", false);
   // <plastic_convergence_algo> (Vaango: radialReturn by default, biswajit required for gurson): both
   // select Tephra's returns, which solve the backward-Euler equations of the step to the tolerance
   // (von Mises: the implicit radial return; porous yields: the two-invariant return), not Vaango's
@@ -284,6 +301,10 @@ ConstitutiveModelP ElasticPlasticHP::create(const ModelParameters& params) {
     m->k_evp_ = k++;
   }
   if (m->failure_.random_initial_fields()) m->k_drawn_ = k++;
+  if (p.alpha != 0.0) {
+    m->k_T0_ = k++;
+    m->k_Tprev_ = k++;
+  }
   // Kinematic hardening (VT ch. 11): the backstress column goes last (flat offset = k).
   const auto kin = assembly::sub_model(params, "elastic_plastic_hp", "kinematic_hardening_model",
                                        kinematic_hardening_models(), "none", ctx,
@@ -291,12 +312,7 @@ ConstitutiveModelP ElasticPlasticHP::create(const ModelParameters& params) {
                                          return create_kinematic_hardening_model(key, q, c);
                                        });
   // MTS: the structure stress sigma_e is a scalar history column (before the backstress).
-  if (m->flow_->type() == "mechanical_threshold_stress") {
-    if (m->yield_)
-      params.missing_feature("flow_model", "elastic_plastic_hp MTS flow (sigma_e history) with yield_condition '" +
-                                               yield->type() + "' (the two-invariant return does not integrate sigma_e)");
-    m->k_sigma_e_ = k++;
-  }
+  if (m->flow_->type() == "mechanical_threshold_stress") m->k_sigma_e_ = k++;
   if (kin->type() != "none") {
     if (m->yield_)
       params.missing_feature("kinematic_hardening_model", "elastic_plastic_hp kinematic hardening with yield_condition '" +

@@ -49,8 +49,20 @@
 // Stability checks with kinematic hardening use the J2 tangent on n̂ = ξ/|ξ| with the modulus
 // H = ∂σ_y/∂ε_p + H_1 - 3/2 H_2 β:n̂ (KinematicHardeningModel::j2_modulus).
 // <plastic_convergence_algo> radialReturn / biswajit: both take the returns above.
-// MissingFeature: kinematic hardening or MTS with a porous yield, useModifiedEOS,
-// coeff_thermal_expansion != 0, deviatoric_stress_model other than hypoElastic.
+// Thermal expansion (<coeff_thermal_expansion> α, default 0 as Vaango; VT eq. 17.3-17.5 with
+// the closed form of 18.12): the mean stress is the EOS's minus the thermal pressure,
+//   p = p_EOS(J^e) - 3 κ α (T - T_0),   κ = J^e dp_EOS/dJ^e,
+// T_0 the point's first temperature (history "thermalReferenceTemperature"); the rate-form
+// default_hypo integrates the mechanical part p_EOS (the thermal part of p_n is removed first,
+// as in elastic_plastic). For default_hypo (κ = K, p_EOS = K ln J) free heating gives σ = 0 at
+// ln J = 3 α ΔT (log strain α ΔT per direction); heating at F = I gives σ = -3 K α ΔT I.
+// Vaango's explicit ElasticPlasticHP reads α and does not use it ("only used in implicit code").
+// α = 0 when the deck's <MPM><DoThermalExpansion> is false (Vaango MPMFlags, default true).
+// <useModifiedEOS>: only the MPMICE hooks change (as in Vaango): in expansion p = p_ref
+// (rho/rho0)^(K0/p_ref), K0 the EOS sub-model's tangent at J = 1 (models/solid/ModifiedEos.h).
+// MTS with a porous yield: σ_e inside the two-invariant return (PorousReturn.h).
+// MissingFeature: kinematic hardening with a porous yield,
+// deviatoric_stress_model other than hypoElastic.
 #include <memory>
 
 #include "models/plasticity/FlowStressModel.h"
@@ -69,6 +81,8 @@ struct ElasticPlasticHPParams {
   double tolerance = 1e-12;     // <tolerance>: relative tolerance of the return
   bool isothermal = false;      // <isothermal>
   bool do_melting = true;       // <do_melting> (Vaango's default)
+  double alpha = 0.0;           // <coeff_thermal_expansion> [1/K] (Vaango's default 0)
+  bool use_modified_eos = false;  // <useModifiedEOS>: MPMICE expansion branch (models/solid/ModifiedEos.h)
 };
 
 class ElasticPlasticHP final : public ConstitutiveModel {
@@ -84,6 +98,7 @@ class ElasticPlasticHP final : public ConstitutiveModel {
   // default_hypo integrated to p = K ln J; the thermal term of VT 18.81 is left out).
   std::optional<SolidEosPoint> pressure_at_density(double rho, double density0, double T) const override;
   std::optional<double> density_at_pressure(double p_gauge, double density0, double T) const override;
+  bool modified_eos() const override { return p_.use_modified_eos; }
 
   // The point update (what update() does for one point; unit tests call it).
   // hist = {ε_p, ε̇_p, φ, D, localized, [ln J^p], [drawn], [σ_e], [β (9, row-major)]} (flat),
@@ -105,6 +120,7 @@ class ElasticPlasticHP final : public ConstitutiveModel {
   int k_beta_ = -1;   // flat offset of history "backStress" (9 values, last column; kinematic only)
   int k_evp_ = -1;    // history "plasticVolumetricStrain" (porous yield only)
   int k_drawn_ = -1;  // history "initialFieldsDrawn" (Gaussian initial fields only)
+  int k_T0_ = -1, k_Tprev_ = -1;  // thermal reference and last temperature (alpha != 0 only)
   int history_count_ = 5;
 };
 

@@ -1,5 +1,7 @@
 #include "models/solid/ViscoScram.h"
 
+#include "models/solid/ModifiedEos.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -194,7 +196,6 @@ long ViscoScram::update(const SolidUpdateInput& in, const SolidUpdateOutput& out
 }
 
 std::optional<SolidEosPoint> ViscoScram::pressure_at_density(double rho, double density0, double) const {
-  if (p_.modified_eos) return std::nullopt;  // needs p_ref: modified_eos_pressure
   const double K = p_.bulk_modulus();
   SolidEosPoint e;
   e.pressure = 0.5 * K * (rho / density0 - density0 / rho);
@@ -204,37 +205,18 @@ std::optional<SolidEosPoint> ViscoScram::pressure_at_density(double rho, double 
 }
 
 std::optional<double> ViscoScram::density_at_pressure(double p_gauge, double density0, double) const {
-  if (p_.modified_eos) return std::nullopt;
   const double x = p_gauge / p_.bulk_modulus();
   return density0 * (x + std::sqrt(x * x + 1.0));
 }
 
 SolidEosPoint ViscoScram::modified_eos_pressure(double rho, double density0, double p_ref) const {
-  const double K = p_.bulk_modulus();
-  if (rho >= density0) {
-    SolidEosPoint e;
-    e.pressure = 0.5 * K * (rho / density0 - density0 / rho);
-    e.dp_drho = 0.5 * K * (1.0 / density0 + density0 / (rho * rho));
-    e.c2 = K / rho;
-    return e;
-  }
-  // p = p_ref (rho/rho0)^n, n = K/p_ref: positive absolute pressure for any expansion.
-  const double n = K / p_ref, r = std::pow(rho / density0, n);
-  SolidEosPoint e;
-  e.pressure = p_ref * r - p_ref;
-  e.dp_drho = K / rho * r;
-  e.c2 = e.dp_drho;
-  return e;
+  if (rho >= density0) return *pressure_at_density(rho, density0, 0.0);
+  return modified_eos_expansion(rho, density0, p_.bulk_modulus(), p_ref);  // K0 = K (ModifiedEos.h)
 }
 
 double ViscoScram::modified_eos_density(double p_gauge, double density0, double p_ref) const {
-  const double K = p_.bulk_modulus();
-  if (p_gauge >= 0.0) {
-    const double x = p_gauge / K;
-    return density0 * (x + std::sqrt(x * x + 1.0));
-  }
-  // Inverse of the expansion branch: rho = rho0 (p/p_ref)^(p_ref/K).
-  return density0 * std::pow((p_gauge + p_ref) / p_ref, p_ref / K);
+  if (p_gauge >= 0.0) return *density_at_pressure(p_gauge, density0, 0.0);
+  return modified_eos_expansion_density(p_gauge, density0, p_.bulk_modulus(), p_ref);
 }
 
 ConstitutiveModelP ViscoScram::create(const ModelParameters& params) {

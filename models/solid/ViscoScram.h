@@ -59,9 +59,9 @@
 // the "standard" EOS): p - p_ref = K/2 (rho/rho0 - rho0/rho), dp/drho =
 // K/2 (1/rho0 + rho0/rho^2), c^2 = K/rho; rho = rho0 (x + sqrt(x^2 + 1)), x = (p - p_ref)/K.
 // <useModifiedEOS> (p = p_ref (rho/rho0)^(K/p_ref) for rho < rho0) needs the
-// ICE reference pressure: modified_eos_pressure / modified_eos_density take
-// it; the generic hooks return nullopt then (MPMICE reports MissingFeature
-// until it passes p_ref).
+// ICE reference pressure: modified_eos() is true, the hooks give the standard
+// branch and MPMICE adds the expansion branch (models/solid/ModifiedEos.h);
+// modified_eos_pressure / modified_eos_density are both branches with p_ref.
 //
 // Parameters (Vaango names): PR, CrackParameterA, CrackPowerValue,
 // CrackMaxGrowthRate, StressIntensityF, CrackFriction, InitialCrackRadius,
@@ -140,6 +140,7 @@ class ViscoScram final : public ConstitutiveModel {
   double shear_modulus() const override { return p_.shear_modulus(); }
   std::optional<SolidEosPoint> pressure_at_density(double rho, double density0, double T) const override;
   std::optional<double> density_at_pressure(double p_gauge, double density0, double T) const override;
+  bool modified_eos() const override { return p_.modified_eos; }
   // Vaango's modified EOS below rho0 (absolute pressure p_ref (rho/rho0)^(K/p_ref)),
   // standard EOS above; returns the GAUGE pressure p - p_ref.
   SolidEosPoint modified_eos_pressure(double rho, double density0, double p_ref) const;

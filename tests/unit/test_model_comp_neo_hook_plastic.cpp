@@ -182,7 +182,8 @@ TEST(ModelCompNeoHookPlastic, ModifiedEosClosedForms) {
     EXPECT_NEAR(modified_eos_density(e.pressure, kRho0, kK, p_ref), rho, 1e-9 * rho) << x;
   }
   // The generic hooks have no p_ref: absent with useModifiedEOS, the standard EOS without.
-  EXPECT_FALSE(make({{"useModifiedEOS", 1}})->pressure_at_density(kRho0, kRho0, 300).has_value());
+  EXPECT_TRUE(make({{"useModifiedEOS", 1}})->modified_eos());  // hooks: the compression branch (ModifiedEos.h)
+  EXPECT_FALSE(make()->modified_eos());
   EXPECT_NEAR(make()->pressure_at_density(1.1 * kRho0, kRho0, 300)->pressure, 0.5 * kK * (1.1 - 1 / 1.1), 1e-6);
 }
 
