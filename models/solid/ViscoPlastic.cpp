@@ -36,7 +36,7 @@ SuvicState axpy(const SuvicState& y, double h, const SuvicState& r) {
 double SuvicParams::prefactor() const { return A * std::exp(-Q / (Rg * T)); }
 
 double suvic_rates(const SuvicState& y, const Eigen::Matrix3d& d, double K_bulk, double G, const SuvicParams& p,
-                   SuvicState& rate) {
+                   SuvicState& rate, double* power) {
   const Eigen::Matrix3d I = Eigen::Matrix3d::Identity();
   const Eigen::Matrix3d r = dev(y.tau) - y.beta;
   const double X = std::sqrt(1.5 * r.squaredNorm());  // eq. 10.30
@@ -59,6 +59,7 @@ double suvic_rates(const SuvicState& y, const Eigen::Matrix3d& d, double K_bulk,
     if (y.K < K_sat) rate.K = p.A5 * rate_eq * (1.0 - y.K / K_sat);                  // eq. 10.35
   }
   rate.tau = (K_bulk - 2.0 * G / 3.0) * d.trace() * I + 2.0 * G * (d - eps_i);
+  if (power) *power = rate_eq > 0.0 ? y.tau.cwiseProduct(eps_i).sum() : 0.0;  // tau : eps_dot^i
   return rate_eq;
 }
 
@@ -69,23 +70,28 @@ bool suvic_integrate(SuvicState& y, const Eigen::Matrix3d& d, double dt, double 
   for (long k = 0; t < dt; ++k) {
     if (k >= kMaxSubsteps) return false;
     SuvicState r1, r2;
-    const double e1 = suvic_rates(y, d, K_bulk, G, p, r1);
-    const double lambda = stiffness(y, e1, G, p);
-    const double h = lambda > 0.0 ? std::min(dt - t, 0.05 / lambda) : dt - t;
-    const SuvicState y1 = axpy(y, h, r1);
-    suvic_rates(y1, d, K_bulk, G, p, r2);
-    // tau:eps_dot^i from the elastic law: eps_dot^i = d - C^{-1} tau_dot (deviatoric part).
-    auto power = [&](const SuvicState& s, const SuvicState& r) {
-      return dev(s.tau).cwiseProduct(dev(d) - dev(r.tau) / (2.0 * G)).sum();
-    };
-    dissipation += 0.5 * h * (power(y, r1) + power(y1, r2));
+    double w1 = 0.0, w2 = 0.0;
+    const double e1 = suvic_rates(y, d, K_bulk, G, p, r1, &w1);
+    const double lambda1 = stiffness(y, e1, G, p);
+    double h = lambda1 > 0.0 ? std::min(dt - t, 0.05 / lambda1) : dt - t;
+    // Heun: predictor y1 = y + h r1; the step is accepted when h times the stiffness at
+    // both ends is <= 0.1 (an elastic predictor that overshoots into fast flow is cut).
+    SuvicState y1;
+    for (int tries = 0;; ++tries) {
+      y1 = axpy(y, h, r1);
+      const double e2 = suvic_rates(y1, d, K_bulk, G, p, r2, &w2);
+      const double lambda = std::max(lambda1, stiffness(y1, e2, G, p));
+      if (h * lambda <= 0.1 || tries >= 60) break;
+      h = std::min(0.5 * h, 0.05 / lambda);
+    }
+    dissipation += 0.5 * h * (w1 + w2);
     y.tau += 0.5 * h * (r1.tau + r2.tau);
     y.beta += 0.5 * h * (r1.beta + r2.beta);
     y.R += 0.5 * h * (r1.R + r2.R);
     y.K += 0.5 * h * (r1.K + r2.K);
     y.tau = 0.5 * (y.tau + y.tau.transpose()).eval();
     if (!y.tau.allFinite() || !y.beta.allFinite() || !std::isfinite(y.R) || !(y.K > 0.0)) return false;
-    t += h;
+    t = (dt - t <= h) ? dt : t + h;
   }
   return true;
 }

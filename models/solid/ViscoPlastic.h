@@ -28,7 +28,9 @@
 // Integration: the step's ODE system (d constant over the step) is integrated
 // with Heun's method (2nd order) in adaptive substeps h <= 0.05 / lambda,
 // lambda = 3G N eps_dot_eq / (X_ae - R) + A1 eps_dot_eq / beta_sat (the stiffness of
-// the overstress law); more than 100000 substeps in one step is a failure.
+// the overstress law), a substep being cut until h lambda <= 0.1 at both its ends
+// (so an elastic predictor cannot jump deep into fast flow); more than 100000
+// substeps in one step is a failure.
 // Vaango integrates with a theta-linearized rate form
 // (<integration_parameter_theta>); that parameter is read and not used.
 // Outputs: plastic work per reference volume J tau:eps_dot^i dt; stored energy
@@ -60,9 +62,10 @@ struct SuvicState {
 };
 
 // The rates of the SUVIC-I system (10.29-10.35) at state y under the unrotated rate of
-// deformation d, with elastic moduli K_bulk, G. Returns eps_dot_eq (0 below R).
+// deformation d, with elastic moduli K_bulk, G. Returns eps_dot_eq (0 below R);
+// *power (optional) = tau : eps_dot^i [W/m^3].
 double suvic_rates(const SuvicState& y, const Eigen::Matrix3d& d, double K_bulk, double G, const SuvicParams& p,
-                   SuvicState& rate);
+                   SuvicState& rate, double* power = nullptr);
 
 // Integrates the system over dt (adaptive Heun substeps); returns false on failure.
 // dissipation: int tau:eps_dot^i dt [J/m^3 current].
