@@ -7,6 +7,7 @@
 #include <cmath>
 #include <functional>
 #include <stdexcept>
+#include <string>
 
 #include <Eigen/Geometry>
 #include <Eigen/LU>
@@ -123,6 +124,8 @@ TEST(ModelViscoTransIsoHyper, RampMatchesHereditaryIntegralToSecondOrder) {
     }
     err[r] /= scale;
   }
+  RecordProperty("err_40", testing::PrintToString(err[0]));
+  RecordProperty("err_80", testing::PrintToString(err[1]));
   EXPECT_LT(err[1], 2e-3);
   EXPECT_NEAR(err[0] / err[1], 4.0, 0.8) << err[0] << " " << err[1];  // second order in dt
 }
