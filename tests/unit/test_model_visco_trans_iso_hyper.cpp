@@ -126,7 +126,7 @@ TEST(ModelViscoTransIsoHyper, RampMatchesHereditaryIntegralToSecondOrder) {
   }
   RecordProperty("err_40", testing::PrintToString(err[0]));
   RecordProperty("err_80", testing::PrintToString(err[1]));
-  EXPECT_LT(err[1], 2e-3);
+  EXPECT_LT(err[1], 1e-4);  // measured 3.1e-5
   EXPECT_NEAR(err[0] / err[1], 4.0, 0.8) << err[0] << " " << err[1];  // second order in dt
 }
 
