@@ -203,6 +203,9 @@ void MpmComponent::update_stress(MpmMaterial& m, int step, double dt) {
   in.L = m.L;
   in.temperature = p.temperature;
   in.stress_old = p.stress;
+  in.position = p.x;       // x_p at t_n (the particles move after the stress update)
+  in.time = time_ + dt;    // t_{n+1}; time_ is t_n here (0 at initialization)
+  in.reference_volume = p.volume0;
   const SolidUpdateOutput out{p.stress, p.wave_speed, p.energy_density, m.plastic_work, m.heating, history};
   const long bad = m.model->update(in, out);
   if (bad >= 0) fail_particle(m, std::size_t(bad), step, "compute stress tensor",

@@ -53,6 +53,14 @@ struct SolidUpdateInput {
   std::span<const Eigen::Matrix3d> L;        // velocity gradient of the step, F_{n+1} = (I + dt L) F_n
   std::span<const double> temperature;       // T at t_{n+1} [K]
   std::span<const Eigen::Matrix3d> stress_old;  // Cauchy stress at t_n (may alias out.stress)
+  // Read-only point context for models whose law depends on where and when
+  // (polar_orthotropic_hypoelastic: the material cylindrical frame from the
+  // initial position; program_burn: the burn front). The MPM driver fills both;
+  // a driver without positions leaves `position` empty, and models that need it
+  // report the span (their update fails) -- see needs_position().
+  std::span<const Eigen::Vector3d> position;  // particle position x_p at t_n [m]
+  double time = 0.0;                          // t_{n+1}, the end of the step [s] (0 at initialization)
+  std::span<const double> reference_volume;   // particle reference volume V0 = m_p/rho_0 [m^3]
 };
 
 struct SolidUpdateOutput {
@@ -96,6 +104,9 @@ class ConstitutiveModel {
   // True for a rigid body (VT eq. 3.1): the driver keeps F = I (and so the
   // reference volume); the particles only move with the grid velocity.
   virtual bool rigid() const { return false; }
+
+  // True when update() reads SolidUpdateInput::position (drivers must supply it).
+  virtual bool needs_position() const { return false; }
 
   // ---- hooks MPMICE needs (Vaango computePressEOSCM / computeRhoMicroCM).
   // std::nullopt: not provided by this model; the caller reports MissingFeature.

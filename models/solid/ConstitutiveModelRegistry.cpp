@@ -23,6 +23,12 @@
 #include "models/solid/Water.h"
 // round 2 (solid-models): MMS / damage variants
 #include "models/solid/CnhDamage.h"
+#include "models/solid/CnhpDamage.h"  // solids-b
+#include "models/solid/ViscoTransIsoHyper.h"  // solids-b
+#include "models/solid/ViscoPlastic.h"  // solids-b
+#include "models/solid/PAlpha.h"  // solids-b
+#include "models/solid/PolarOrthotropicHypoElastic.h"  // solids-b
+#include "models/solid/ProgramBurn.h"  // solids-b
 #include "models/geo/CamClay.h"  // solids-geo
 #include "models/geo/MohrCoulomb.h"  // solids-geo
 
@@ -53,6 +59,12 @@ const std::map<std::string, Creator>& creators() {
       {"water", &Water::create},
       // round 2 (solid-models): MMS / damage variants
       {"cnh_damage", &CnhDamage::create},
+      {"cnhp_damage", &CnhpDamage::create},  // solids-b
+      {"visco_trans_iso_hyper", &ViscoTransIsoHyper::create},  // solids-b
+      {"visco_plastic", &ViscoPlastic::create},  // solids-b (SUVIC-I)
+      {"p_alpha", &PAlpha::create},  // solids-b
+      {"polar_orthotropic_hypoelastic", &PolarOrthotropicHypoElastic::create},  // solids-b
+      {"program_burn", &ProgramBurn::create},  // solids-b
       {"hypo_elastic_mms", &HypoElastic::create_mms},
       {"camclay", &CamClay::create},  // solids-geo (VT ch. 20)
       {"mohr_coulomb", &MohrCoulomb::create},  // solids-geo (VT ch. 19)

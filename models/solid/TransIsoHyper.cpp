@@ -65,7 +65,7 @@ long TransIsoHyper::update(const SolidUpdateInput& in, const SolidUpdateOutput& 
   return update_elastic_points(in, out, [&](const Eigen::Matrix3d& F, double rho0) { return trans_iso_hyper_point(F, rho0, p_); });
 }
 
-ConstitutiveModelP TransIsoHyper::create(const ModelParameters& params) {
+TransIsoHyperParams read_trans_iso_hyper_params(const ModelParameters& params, const std::string& type) {
   TransIsoHyperParams p;
   p.kappa = params.get_double("bulk_modulus");
   p.C1 = params.get_double("c1");
@@ -100,10 +100,14 @@ ConstitutiveModelP TransIsoHyper::create(const ModelParameters& params) {
   params.get_double("max_fiber_strain");
   params.get_double("max_matrix_strain");
   if (params.get_bool("failure_option", false))
-    params.missing_feature("failure_option", "trans_iso_hyper fibre/matrix failure (failure_option = true)");
+    params.missing_feature("failure_option", type + " fibre/matrix failure (failure_option = true)");
   if (params.get_bool("useModifiedEOS", false))
-    params.missing_feature("useModifiedEOS", "trans_iso_hyper with useModifiedEOS = true");
-  return std::make_shared<TransIsoHyper>(p);
+    params.missing_feature("useModifiedEOS", type + " with useModifiedEOS = true");
+  return p;
+}
+
+ConstitutiveModelP TransIsoHyper::create(const ModelParameters& params) {
+  return std::make_shared<TransIsoHyper>(read_trans_iso_hyper_params(params, "trans_iso_hyper"));
 }
 
 }  // namespace tephra

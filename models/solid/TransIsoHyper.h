@@ -27,6 +27,8 @@
 // Failure (<failure_option> true: matrix failure when max - min eigenvalue of C
 // exceeds <max_matrix_strain>, fibre failure when lb exceeds <max_fiber_strain>) is
 // not implemented: MissingFeature. <useModifiedEOS> true: MissingFeature.
+#include <string>
+
 #include <Eigen/Core>
 
 #include "models/solid/ConstitutiveModel.h"
@@ -48,6 +50,10 @@ struct TransIsoHyperParams {
 // lb dW_f/dlb (Weiss), its derivative with respect to lb, and W_f.
 double trans_iso_fibre_stress(double lb, const TransIsoHyperParams& p);
 double trans_iso_fibre_energy(double lb, const TransIsoHyperParams& p);
+
+// Reads and checks the trans_iso_hyper parameters (shared with visco_trans_iso_hyper);
+// `type` names the model in MissingFeature messages.
+TransIsoHyperParams read_trans_iso_hyper_params(const ModelParameters& params, const std::string& type);
 
 SolidPointResult trans_iso_hyper_point(const Eigen::Matrix3d& F, double density0, const TransIsoHyperParams& p);
 

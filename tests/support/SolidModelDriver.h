@@ -73,6 +73,9 @@ inline const std::map<std::string, std::map<std::string, double>>& sample_solid_
       {"hypo_elastic_mms", {{"K", 8.0e9}, {"G", 3.0e9}}},
       // Failure strain 0.5: far beyond the contracts' small strains (the elastic branch).
       {"cnh_damage", {{"bulk_modulus", 8.0e9}, {"shear_modulus", 3.0e9}, {"failure_variable_mean", 0.5}}},
+      // comp_neo_hook_plastic's sample with a failure strain far beyond the contracts' strains.
+      {"cnhp_damage", {{"bulk_modulus", 8.0e9}, {"shear_modulus", 3.0e9}, {"yield_stress", 3.0e7},
+                       {"hardening_modulus", 1.0e8}, {"failure_variable_mean", 0.5}}},
       // Vaango's const_test_cmr.ups: G = 2 (C1 + C2) = 2.4e5, nu = 0.49.
       {"comp_mooney_rivlin", {{"he_constant_1", 1.0e5}, {"he_constant_2", 2.0e4}, {"he_PR", 0.49}}},
       {"rigid", {}},
@@ -116,6 +119,28 @@ inline const std::map<std::string, std::map<std::string, double>>& sample_solid_
       {"trans_iso_hyper", {{"bulk_modulus", 8.0e9}, {"c1", 1.0e9}, {"c2", 0.5e9}, {"c3", 1e-3}, {"c4", 3.0},
                            {"c5", 1e-2}, {"fiber_stretch", 1.1}, {"max_fiber_strain", 2.0},
                            {"max_matrix_strain", 2.0}, {"failure_option", 0.0}}},
+      // trans_iso_hyper's sample with two slow Prony terms (t >= 1e5 s: the contracts' steps see
+      // the instantaneous deviator (1 + 0.3) G; test_model_visco_trans_iso_hyper checks relaxation).
+      {"visco_trans_iso_hyper", {{"bulk_modulus", 8.0e9}, {"c1", 1.0e9}, {"c2", 0.5e9}, {"c3", 1e-3}, {"c4", 3.0},
+                                 {"c5", 1e-2}, {"fiber_stretch", 1.1}, {"max_fiber_strain", 2.0},
+                                 {"max_matrix_strain", 2.0}, {"failure_option", 0.0}, {"y1", 0.2}, {"t1", 1e5},
+                                 {"y2", 0.1}, {"t2", 1e6}}},
+      // SUVIC-I (flow block in add_sample_blocks) with initial yield and drag stresses of 1 GPa:
+      // elastic on the contracts' small strains, slow inelastic flow (~4e-4 /s) on the large paths.
+      {"visco_plastic", {{"shear_modulus", 3.0e9}, {"bulk_modulus", 8.0e9}}},
+      // p-alpha: alpha_0 = 1.25 at the contracts' rho_0 = 7800 (material values in add_sample_blocks),
+      // elastic to J = 1 - Pe/K0 = 0.99; Ku = K0 so tension has the same slope K0 (the small-strain contract).
+      {"p_alpha", {{"Ps", 1.0e9}, {"Pe", 8.0e7}, {"rhoS", 9750.0}, {"K0", 8.0e9}, {"Ks", 1.6e11}, {"Ku", 8.0e9},
+                   {"T_0", 300.0}, {"C_0", 4500.0}, {"Gamma_0", 1.5}, {"S_alpha", 1.5}}},
+      // Polar orthotropic with isotropic constants (E = 8 GPa, nu = 1/3, G = 3 GPa: K = 8 GPa)
+      // so the isotropic contracts apply; the orthotropy: test_model_polar_orthotropic_hypoelastic.
+      {"polar_orthotropic_hypoelastic", {{"E_r", 8.0e9}, {"E_theta", 8.0e9}, {"E_z", 8.0e9}, {"nu_theta_r", 1.0 / 3},
+                                         {"nu_z_r", 1.0 / 3}, {"nu_z_theta", 1.0 / 3}, {"G_theta_z", 3.0e9},
+                                         {"G_z_r", 3.0e9}, {"G_r_theta", 3.0e9}}},
+      // Programmed burn with jwlpp_mpm's ANFO constants; the front starts 100 km away
+      // (strings in add_sample_blocks), so the contracts see the unreacted Murnaghan solid.
+      {"program_burn", {{"K", 3.9e-10}, {"n", 7.4}, {"A", 2.9867e11}, {"B", 4.11706e9}, {"C", 7.206147e8},
+                        {"R1", 4.95}, {"R2", 1.15}, {"om", 0.35}, {"rho0", 7800.0}, {"D", 8000.0}}},
       // ---- geomaterials (solids-geo). Cam-Clay: a clay at p = -100 kPa (K = -p/kt = 1 MPa,
       // G = mu0 + alpha |p0| = 5.5 MPa), over-consolidated to p_c = -200 kPa (the reference
       // state is the critical-state point of the ellipse); sub-model blocks in add_sample_blocks.
@@ -134,7 +159,17 @@ inline const std::map<std::string, std::map<std::string, double>>& sample_solid_
 // shear strain of ~1e-2, so the contracts see both branches).
 inline void add_sample_blocks(const std::string& type, MapModelParameters& p) {
   if (type == "visco_scram") p.enclosing = {{"specific_heat", 996.0}};  // heating needs c_v
-  if (type == "trans_iso_hyper") p.strings["direction_of_symm"] = "[0.6, 0.8, 0]";
+  if (type == "trans_iso_hyper" || type == "visco_trans_iso_hyper") p.strings["direction_of_symm"] = "[0.6, 0.8, 0]";
+  if (type == "polar_orthotropic_hypoelastic") {
+    p.strings["symmetry_axis_top"] = "[0, 0, 1]";
+    p.strings["symmetry_axis_bottom"] = "[0, 0, 0]";
+  }
+  if (type == "program_burn") p.strings["starting_location"] = "[1e5, 0, 0]";
+  if (type == "p_alpha") p.enclosing = {{"density", 7800.0}, {"specific_heat", 450.0}};
+  if (type == "visco_plastic") {
+    p.add_block("viscoplastic_flow_model", "suvic_i", {{"initial_yield", 1.0e9}, {"initial_drag", 1.0e9}});
+    return;
+  }
   if (type == "mohr_coulomb") {
     p.strings["model_type"] = "classic";
     p.add_block("model_parameters", "",
@@ -182,6 +217,9 @@ struct PointState {
   double temperature = 300.0;
   std::vector<std::vector<double>> history;
   double wave_speed = 0, energy_density = 0, plastic_work = 0, heating = 0;
+  Eigen::Vector3d x = Eigen::Vector3d::Zero();  // position (point context)
+  double time = 0.0;                            // t_n; step_point passes t_n + dt
+  double volume0 = 1e-9;                        // reference volume V0 [m^3] (a 1 mm cube)
 
   explicit PointState(const ConstitutiveModel& m) {
     for (const HistoryVariable& h : m.history()) history.push_back(h.initial);
@@ -205,10 +243,15 @@ inline long step_point(const ConstitutiveModel& m, double density0, PointState& 
   in.L = {&L, 1};
   in.temperature = {&s.temperature, 1};
   in.stress_old = {&stress_old, 1};
+  const Eigen::Vector3d x = s.x;
+  in.position = {&x, 1};
+  in.time = s.time + dt;
+  in.reference_volume = {&s.volume0, 1};
   const SolidUpdateOutput out{{&s.stress, 1},       {&s.wave_speed, 1}, {&s.energy_density, 1},
                               {&s.plastic_work, 1}, {&s.heating, 1},    hist};
   const long r = m.update(in, out);
   s.F = F_new;
+  s.time += dt;
   return r;
 }
 
