@@ -523,7 +523,10 @@ void IceComponent::lagrangian_values_and_exchange(double dt) {
   // the step-restart machinery active (implicit, or source models) the step is
   // redone with dt/2, else the end-of-step state check stops the run.
   if (setup_.implicit.enabled || model_src_) {
-    for (std::size_t m = 0; m < nm; ++m)
+    for (std::size_t m = 0; m < nm; ++m) {
+      // An MPMICE solid's v_L is not advected (the particles carry the solid;
+      // a cell whose solid burns away has M v_L -> 0).
+      if (setup_.materials[m].lagrangian) continue;
       for (std::size_t pi = 0; pi < g.patches.size(); ++pi)
         for_each_cell_serial(g.patches[pi].cells(), [&](int i, int j, int k) {
           const double v = spv_L_[m][pi](i, j, k);
@@ -533,6 +536,7 @@ void IceComponent::lagrangian_values_and_exchange(double dt) {
              << k << ")";
           throw StepRestart{os.str()};
         });
+    }
   }
   // Boundary values of the Lagrangian state; output copies.
   for (std::size_t m = 0; m < nm; ++m) {
