@@ -59,7 +59,7 @@ std::unique_ptr<MpmIceComponent> make_mpmice_component(const Deck& deck) {
   // reactant and product) are not wired into the coupled step yet.
   for (const IceModelP& m : s.models)
     if (!dynamic_cast<const SolidBurnModel*>(m.get()))
-      root.require_child("Models").missing_feature("<Model type=\"" + m->type() + "\"> in MPMICE (implemented there: Simple_Burn)");
+      root.require_child("Models").missing_feature("<Model type=\"" + m->type() + "\"> in MPMICE (implemented there: Simple_Burn, Steady_Burn)");
   if (s.lodi.enabled) root.require_child("Grid").missing_feature("LODI boundary conditions in MPMICE");
   auto ice = std::make_unique<IceComponent>(std::move(s));
   return std::make_unique<MpmIceComponent>(std::move(mpm), std::move(ice), p_ref);

@@ -29,6 +29,7 @@
 // with the same loss) works on the remaining solid.
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <vector>
 
 #include "core/grid/Loop.h"
@@ -47,6 +48,24 @@ void MpmIceComponent::corner_masses(std::size_t s, const IntVec3& c, double wm[8
   for (int n = 0; n < 8; ++n) {
     const IntVec3 node = c + off + IntVec3(n & 1, (n >> 1) & 1, (n >> 2) & 1);
     wm[n] = node_cell_weight(ng, symmetric, node) * ng.mass[ng.index(node)];
+  }
+}
+
+// The cell holding x_p: floor((x_p - lower)/dx), interior cells only.
+void MpmIceComponent::particles_per_cell(std::size_t s, CellScalars& out) const {
+  const Grid& g = ice_->grid();
+  out.fill(0.0);
+  for (const Vec3& x : mpm_->materials()[s].particles.x) {
+    IntVec3 c;
+    for (int d = 0; d < 3; ++d) c[d] = int(std::floor((x[d] - g.lower[d]) / g.dx[d]));
+    if ((c.array() < 0).any() || (c.array() >= g.cells.array()).any()) continue;
+    for (std::size_t pi = 0; pi < g.patches.size(); ++pi) {
+      const Patch& p = g.patches[pi];
+      if ((c.array() >= p.lo.array()).all() && (c.array() < p.hi.array()).all()) {
+        out[pi](c) += 1.0;
+        break;
+      }
+    }
   }
 }
 

@@ -52,9 +52,12 @@ IceModelP make_simple_burn(const DeckNode& model, const IceSetup& setup) {
 
 }  // namespace
 
+IceModelP make_steady_burn(const DeckNode& model, const IceSetup& setup);  // SteadyBurnModel.cpp
+
 IceModelFactories mpmice_burn_model_factories() {
   IceModelFactories f;
   f["Simple_Burn"] = make_simple_burn;
+  f["Steady_Burn"] = make_steady_burn;
   return f;
 }
 

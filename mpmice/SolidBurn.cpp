@@ -37,6 +37,7 @@ void SolidBurnModel::initialize(const Grid& grid, const std::vector<IceMaterialF
   dm_ = CellScalars(grid, 0);
   on_surface_ = CellScalars(grid, 0);
   burning_ = CellScalars(grid, 0);
+  ppc_ = CellScalars(grid, 1);
   burned_.mass = CellScalars(grid, 0);
   burned_.energy = CellScalars(grid, 0);
   burned_.momentum = CellVectors(grid, 0);
@@ -52,25 +53,21 @@ void SolidBurnModel::compute_sources(const IceModelInput& in, IceModelSources& o
   on_surface_.fill(0.0);
   burning_.fill(0.0);
   const IceMaterialFields& solid = in.mats[reactant_];
+  ppc_.fill(0.0);
+  support_->particles_per_cell(reactant_, ppc_);
   for (std::size_t pi = 0; pi < g.patches.size(); ++pi)
     for_each_cell_serial(g.patches[pi].cells(), [&](int i, int j, int k) {
       const IntVec3 c(i, j, k);
       double wm[8];
       support_->corner_masses(reactant_, c, wm);
-      if (!simple_burn_surface_cell(wm, kTinyCornerMass)) return;
-      double T = 0;
-      for (std::size_t m = 0; m < in.mats.size(); ++m) {
-        const double Tm = in.mats[m].temp_CC[pi](c);
-        if (in.mats[m].vol_frac_CC[pi](c) > kBurnThetaMin && Tm > threshold_temperature_ && Tm > T) T = Tm;
-      }
       BurnCell cell;
       cell.in = &in;
       cell.patch = pi;
       cell.c = c;
-      cell.area = simple_burn_surface_area(simple_burn_surface_normal(wm, dx), dx);
-      cell.temperature = T;
-      cell.pressure = in.press_equil_CC[pi](c);
       cell.solid_mass = solid.rho_CC[pi](c) * V;
+      cell.particles = ppc_[pi](c);
+      if (!select_cell(wm, cell)) return;
+      cell.area = simple_burn_surface_area(simple_burn_surface_normal(wm, dx), dx);
       on_surface_[pi](c) = cell.area;
       dm_[pi](c) = std::clamp(burn_mass(cell), 0.0, cell.solid_mass);
     });
@@ -97,6 +94,19 @@ void SolidBurnModel::compute_sources(const IceModelInput& in, IceModelSources& o
       total_momentum_ += P;
       total_heat_ += dm * enthalpy_;
     });
+}
+
+bool SolidBurnModel::select_cell(const double wm[8], BurnCell& cell) const {
+  if (!simple_burn_surface_cell(wm, kTinyCornerMass)) return false;
+  const IceModelInput& in = *cell.in;
+  double T = 0;
+  for (std::size_t m = 0; m < in.mats.size(); ++m) {
+    const double Tm = in.mats[m].temp_CC[cell.patch](cell.c);
+    if (in.mats[m].vol_frac_CC[cell.patch](cell.c) > kBurnThetaMin && Tm > threshold_temperature_ && Tm > T) T = Tm;
+  }
+  cell.temperature = T;
+  cell.pressure = in.press_equil_CC[cell.patch](cell.c);
+  return true;
 }
 
 std::set<std::string> SolidBurnModel::labels() const {

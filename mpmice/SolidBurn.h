@@ -35,6 +35,8 @@ class SolidBurnSupport {
   // Takes dm[c] (kg, interior cells) from solid s's particles (at most the
   // cell's particle mass) and fills `out` with what was removed.
   virtual void burn_particles(std::size_t s, const CellScalars& dm, BurnedCells& out) = 0;
+  // The number of solid s's particles in each interior cell (Uintah's numPPC).
+  virtual void particles_per_cell(std::size_t s, CellScalars& out) const = 0;
 };
 
 // The cell a burn law sees.
@@ -43,9 +45,10 @@ struct BurnCell {
   std::size_t patch = 0;
   IntVec3 c = IntVec3::Zero();
   double area = 0;         // burning surface area in the cell [m^2] (SimpleBurn.h)
-  double temperature = 0;  // hottest material with theta > 0.2 above ThresholdTemp, else 0
-  double pressure = 0;     // press_equil_CC
+  double temperature = 0;  // the law's temperature (Simple_Burn: the hottest material above the threshold)
+  double pressure = 0;     // the law's pressure (Simple_Burn: press_equil_CC)
   double solid_mass = 0;   // the solid's cell mass rho_CC V
+  double particles = 0;    // the solid's particles in the cell
 };
 
 // The common part of the burn models: surface cells, the particle side,
@@ -65,6 +68,14 @@ class SolidBurnModel : public IceModel {
   std::set<std::string> labels() const override;
   std::vector<ModelField> fields() const override;
   void reductions(const std::set<std::string>& labels, std::map<std::string, std::vector<double>>& out) const override;
+  // Simple_Burn's cell rule (the default): a surface cell (SimpleBurn.h) with
+  // temperature = the hottest start-of-step temperature among the materials
+  // with theta > 0.2 above ThresholdTemp (0 if none), pressure = press_equil_CC.
+  // Returns false where the cell cannot burn.
+  virtual bool select_cell(const double wm[8], BurnCell& cell) const;
+  // The solid's particle count in cell c of patch pi (extra cells: 0).
+  double particles_in(std::size_t pi, const IntVec3& c) const { return ppc_[pi](c); }
+  std::size_t product() const { return product_; }
   double mass_burned_last_step() const { return total_burned_; }        // sum_c dm_c of the last step
   const Vec3& momentum_burned_last_step() const { return total_momentum_; }  // sum_c P_c (to the product)
 
@@ -77,7 +88,7 @@ class SolidBurnModel : public IceModel {
   std::size_t reactant_, product_;
   double enthalpy_, threshold_temperature_;
   SolidBurnSupport* support_ = nullptr;
-  CellScalars dm_, on_surface_, burning_;
+  CellScalars dm_, on_surface_, burning_, ppc_;
   BurnedCells burned_;
   double total_burned_ = 0, total_heat_ = 0;
   Vec3 total_momentum_ = Vec3::Zero();
