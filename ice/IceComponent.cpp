@@ -327,13 +327,14 @@ void IceComponent::advance_one(double dt, int step) {
 }
 
 // The coupled MPMICE step calls the explicit step in two halves (the order
-// of advance_one, without source models or the implicit pressure, which the
-// MPMICE deck reader rejects for now).
+// of advance_one, without the implicit pressure, which the MPMICE deck reader
+// rejects for now, and without the half-step restarts).
 void IceComponent::coupled_pressure_phases(double dt, int step) {
   PhaseTimers& T = phase_timers();
   { PhaseTimers::Scope s(T, "ICE: equilibration pressure");       compute_equilibration_pressure(step); }
   { PhaseTimers::Scope s(T, "ICE: face velocities");              compute_face_velocities(dt, press_equil_CC_); }
   { PhaseTimers::Scope s(T, "ICE: face momentum exchange");       add_exchange_to_face_velocities(dt); }
+  if (model_src_) { PhaseTimers::Scope s(T, "ICE: model sources"); compute_model_sources(dt, step); }
   { PhaseTimers::Scope s(T, "ICE: pressure increment");           compute_delP_and_pressure(dt); }
   { PhaseTimers::Scope s(T, "ICE: face pressure");                compute_face_pressure(); }
 }

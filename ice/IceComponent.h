@@ -64,7 +64,8 @@ class IceComponent final : public Component {
   void set_lagrangian_state_fill(std::function<void(IceComponent&)> fill) { lagrangian_fill_ = std::move(fill); }
   std::vector<IceMaterialFields>& mutable_fields() { return mats_; }
   // Steps 2-6 of the coupled order: equilibration pressure, face velocities
-  // and their exchange, pressure increment, face pressure.
+  // and their exchange, model sources (mass conversion, step 4), pressure
+  // increment, face pressure.
   void coupled_pressure_phases(double dt, int step);
   // Steps 8-12: Lagrangian values, exchange, specific volume, advection of
   // the fluids (not of the lagrangian materials), state check.
@@ -181,8 +182,8 @@ class IceComponent final : public Component {
 // The ICE part of a deck (make_ice_component), with `solids` (an MPMICE run's
 // MPM materials, lagrangian) numbered first, as Uintah numbers MPM materials
 // before ICE materials: exchange coefficients and boundary-condition ids
-// count over all of them.
-IceSetup read_ice_setup(const Deck& deck, std::vector<IceMaterialSpec> solids);
+// count over all of them. `models`: <Model> types the caller supplies (MPMICE burn models).
+IceSetup read_ice_setup(const Deck& deck, std::vector<IceMaterialSpec> solids, const IceModelFactories& models = {});
 
 // Reads <CFD><ICE>, <MaterialProperties><ICE>, <exchange_properties>,
 // <PhysicalConstants>, <Grid> and its <BoundaryConditions>.

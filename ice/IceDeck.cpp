@@ -458,7 +458,7 @@ std::unique_ptr<IceComponent> make_ice_component(const Deck& deck) {
   return std::make_unique<IceComponent>(read_ice_setup(deck, {}));
 }
 
-IceSetup read_ice_setup(const Deck& deck, std::vector<IceMaterialSpec> solids) {
+IceSetup read_ice_setup(const Deck& deck, std::vector<IceMaterialSpec> solids, const IceModelFactories& models) {
   const DeckNode& root = deck.root;
   IceSetup s;
   s.materials = std::move(solids);
@@ -539,7 +539,7 @@ IceSetup read_ice_setup(const Deck& deck, std::vector<IceMaterialSpec> solids) {
         s.bcs[m][f][l] = resolve(bcs, static_cast<GridFace>(f), mat, labels[l], grid_node);
       }
     }
-  s.models = parse_ice_models(root, s);
+  s.models = parse_ice_models(root, s, models);
   if (!s.models.empty() && s.implicit.enabled)
     root.require_child("CFD").missing_feature("reaction/source models with the implicit pressure solve");
   read_lodi(bcs, s);

@@ -130,6 +130,9 @@ std::set<std::string> IceComponent::known_labels() const {
   for (const char* l : kReductionLabels) s.insert(l);
   for (const IceModelP& m : setup_.models)
     for (const std::string& l : m->labels()) s.insert(l);
+  // The source models' per-step sources (Uintah's modelMass_src, ...), per material.
+  if (!setup_.models.empty())
+    for (const char* l : {"modelMass_src", "modelMom_src", "modelEng_src", "modelVol_src"}) s.insert(l);
   return s;
 }
 
@@ -168,6 +171,12 @@ void IceComponent::fill_output(const std::set<std::string>& labels, OutputFrame&
     if (want("mass_L_CC")) put(gather(layout_, mass_L_[m], "mass_L_CC", mi));
     if (want("mom_L_CC")) put(gather(layout_, f.mom_L_CC, "mom_L_CC", mi));
     if (want("int_eng_L_CC")) put(gather(layout_, f.int_eng_L_CC, "int_eng_L_CC", mi));
+    if (model_src_) {  // the source models' sources of the last step (IceModelStep.cpp)
+      if (want("modelMass_src")) put(gather(layout_, model_src_->mass[m], "modelMass_src", mi));
+      if (want("modelMom_src")) put(gather(layout_, model_src_->momentum[m], "modelMom_src", mi));
+      if (want("modelEng_src")) put(gather(layout_, model_src_->energy[m], "modelEng_src", mi));
+      if (want("modelVol_src")) put(gather(layout_, model_src_->sp_vol[m], "modelVol_src", mi));
+    }
   }
   for (const IceModelP& model : setup_.models)
     for (const ModelField& mf : model->fields())

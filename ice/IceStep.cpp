@@ -524,7 +524,10 @@ void IceComponent::lagrangian_values_and_exchange(double dt) {
   // redone with dt/2, else the end-of-step state check stops the run.
   if (setup_.implicit.enabled || model_src_) {
     std::string why;  // the first bad cell of this rank; every rank restarts if any has one
-    for (std::size_t m = 0; m < nm && why.empty(); ++m)
+    for (std::size_t m = 0; m < nm && why.empty(); ++m) {
+      // An MPMICE solid's v_L is not advected (the particles carry the solid;
+      // a cell whose solid burns away has M v_L -> 0).
+      if (setup_.materials[m].lagrangian) continue;
       for (std::size_t pi = 0; pi < g.patches.size() && why.empty(); ++pi)
         for_each_cell_serial(g.patches[pi].cells(), [&](int i, int j, int k) {
           const double v = spv_L_[m][pi](i, j, k);
@@ -534,6 +537,7 @@ void IceComponent::lagrangian_values_and_exchange(double dt) {
              << k << ")";
           why = os.str();
         });
+    }
     if (layout_.any(!why.empty())) throw StepRestart{why.empty() ? "a bad Lagrangian specific volume on another MPI rank" : why};
   }
   // Boundary values of the Lagrangian state; output copies.

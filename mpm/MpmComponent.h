@@ -37,6 +37,7 @@ struct MpmMaterial {
   double density = 0.0;                 // rho0 [kg/m^3]
   double thermal_conductivity = 0.0;    // k [W/(m K)] (mpm/thermal/HeatConduction.h)
   double specific_heat = 0.0;           // c_v [J/(kg K)] (conduction, contact, AV heating, ThermalEnergy)
+  double specific_heat_p = 0.0;         // <C_p> [J/(kg K)], default specific_heat (stored only)
   double melt_temperature = 0.0;        // <melt_temp> [K], 0 if absent; read, unused by the implemented models
   double room_temperature = 0.0;        // <room_temp> [K], 0 if absent; read, unused
   ConstitutiveModelP model;

@@ -75,6 +75,11 @@ MpmMaterial parse_material(const DeckNode& mat, int index, GeometryRegistry& geo
       m.thermal_conductivity = c.as_double();
     } else if (c.name == "specific_heat") {
       m.specific_heat = c.as_double();
+    } else if (c.name == "C_p") {
+      // Vaango's MPMMaterial: C_p, default = specific_heat (taken as C_v).
+      // Stored; the MPM and MPMICE energy equations use specific_heat.
+      m.specific_heat_p = c.as_double();
+      if (!(m.specific_heat_p > 0.0)) c.fail("C_p must be > 0");
     } else if (c.name == "melt_temp" || c.name == "room_temp") {
       // Vaango's MPMMaterial T_melt and T_room: read by models with melting or
       // thermal terms; none of the implemented models uses them.
@@ -93,6 +98,7 @@ MpmMaterial parse_material(const DeckNode& mat, int index, GeometryRegistry& geo
   if (!mat.has_child("density")) mat.fail("an MPM material needs a <density>");
   if (!mat.has_child("thermal_conductivity")) mat.fail("an MPM material needs a <thermal_conductivity>");
   if (!mat.has_child("specific_heat")) mat.fail("an MPM material needs a <specific_heat>");
+  if (!mat.has_child("C_p")) m.specific_heat_p = m.specific_heat;
   if (m.sources.empty()) mat.fail("an MPM material needs at least one <geom_object>");
   return m;
 }

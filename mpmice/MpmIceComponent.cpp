@@ -12,6 +12,8 @@ MpmIceComponent::MpmIceComponent(std::unique_ptr<MpmComponent> mpm, std::unique_
     : mpm_(std::move(mpm)), ice_(std::move(ice)), p_ref_(p_ref) {
   mpm_->set_coupling(this);
   ice_->set_lagrangian_state_fill([this](IceComponent&) { solid_state_to_cells(); });
+  for (const IceModelP& m : ice_->models())
+    if (auto* burn = dynamic_cast<SolidBurnModel*>(m.get())) burn->attach(this);
 }
 
 // Particles first (seeded, stresses at F = I, projected to the nodes), then
@@ -37,7 +39,9 @@ double MpmIceComponent::stable_timestep() const {
 //         (solid_state_to_cells)                        after_interpolate_to_grid
 //   2.    equilibration pressure over all materials (solids via SolidEos)
 //   3.    face velocities u*, face momentum exchange
-//   4.    (reactions: not yet - a mass-exchange model plugs in here)
+//   4.    burn models (<Models>: Simple_Burn): the mass each surface cell
+//         burns leaves the particles (burn_particles) and joins the product
+//         gas as ICE model sources                          (in coupled_pressure_phases)
 //   5.    pressure increment delP, p = p_eq + delP
 //   6.    face pressure p*
 //   7.    p_CC -> particles; f_int,g from sigma_p + (p_p - p_ref) I  add_internal_forces
@@ -72,6 +76,18 @@ void MpmIceComponent::fill_output(const std::set<std::string>& labels, OutputFra
   }
   ice_->fill_output(ice_labels, frame);
   mpm_->fill_output(mpm_labels, frame);
+  // g.temperature when MPM does not hold it (no heat conduction): the step-1
+  // node temperature of the coupled step.
+  if (labels.count("g.temperature") && !mk.count("g.temperature"))
+    for (std::size_t s = 0; s < node_temperature_.size(); ++s) {
+      GridFieldArray g;
+      g.location = GridLocation::Node;
+      g.data.label = "g.temperature";
+      g.data.material = mpm_->materials()[s].index;
+      g.data.components = 1;
+      g.data.values = node_temperature_[s];
+      frame.grid_fields.push_back(std::move(g));
+    }
 }
 
 // Reductions over both: TotalMass, TotalMomentum, KineticEnergy (and any
@@ -94,6 +110,7 @@ std::map<std::string, std::vector<double>> MpmIceComponent::reductions(const std
 std::set<std::string> MpmIceComponent::known_labels() const {
   std::set<std::string> s = mpm_->known_labels();
   for (const std::string& l : ice_->known_labels()) s.insert(l);
+  s.insert("g.temperature");  // fill_output
   return s;
 }
 

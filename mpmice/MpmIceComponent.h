@@ -14,12 +14,13 @@
 #include "ice/IceComponent.h"
 #include "mpm/MpmComponent.h"
 #include "mpm/MpmCoupling.h"
+#include "mpmice/SolidBurn.h"
 
 namespace tephra {
 
 struct Deck;
 
-class MpmIceComponent final : public Component, private MpmCoupling {
+class MpmIceComponent final : public Component, private MpmCoupling, private SolidBurnSupport {
  public:
   MpmIceComponent(std::unique_ptr<MpmComponent> mpm, std::unique_ptr<IceComponent> ice, double p_ref);
 
@@ -50,12 +51,19 @@ class MpmIceComponent final : public Component, private MpmCoupling {
   void pressure_to_particles();                // step 7: p_CC -> nodes -> particles
   void cell_changes_to_nodes_and_particles();  // step 13: dv_CC -> v*_g, dT_CC -> T_p
 
+  // SolidBurnSupport (step 4, burn models; ParticleBurn.cpp).
+  void corner_masses(std::size_t s, const IntVec3& c, double wm[8]) const override;
+  void burn_particles(std::size_t s, const CellScalars& dm, BurnedCells& out) override;
+  void particles_per_cell(std::size_t s, CellScalars& out) const override;
+
   std::unique_ptr<MpmComponent> mpm_;
   std::unique_ptr<IceComponent> ice_;
   double p_ref_;
   std::vector<std::vector<double>> particle_pressure_;  // per MPM material: p_p - p_ref
   Particles flux_particles_;  // scratch of solid_mass_fluxes
   NodeGrid flux_grid_;
+  NodeGrid burn_grid_;
+  std::vector<std::vector<double>> node_temperature_;  // per MPM material: T_g of step 1 (g.temperature)  // scratch of burn_particles: the node sums of the removed particle mass
 };
 
 // Reads an <SimulationComponent type="mpmice"> deck: the MPM parts

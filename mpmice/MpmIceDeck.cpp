@@ -6,6 +6,7 @@
 #include "core/base/Errors.h"
 #include "core/deck/DeckLoader.h"
 #include "core/deck/DeckNode.h"
+#include "mpmice/BurnModels.h"
 #include "mpmice/MpmIceComponent.h"
 #include "mpmice/SolidEos.h"
 
@@ -36,7 +37,9 @@ std::unique_ptr<MpmIceComponent> make_mpmice_component(const Deck& deck) {
     const DeckNode& where = s < mat_nodes.size() ? *mat_nodes[s] : mpm_props;
     IceMaterialSpec spec;
     spec.index = int(s);
-    spec.name = "mpm" + std::to_string(s);
+    // Named as in the deck (<material name=...>), so that <Models> can name it.
+    spec.name = s < mat_nodes.size() ? mat_nodes[s]->attribute("name").value_or("") : "";
+    if (spec.name.empty()) spec.name = "mpm" + std::to_string(s);
     spec.eos = std::make_unique<SolidEos>(m.model, m.density, p_ref, where);
     spec.eos_type = spec.eos->type();
     spec.cv = m.specific_heat;
@@ -49,11 +52,14 @@ std::unique_ptr<MpmIceComponent> make_mpmice_component(const Deck& deck) {
     spec.lagrangian = true;
     solids.push_back(std::move(spec));
   }
-  IceSetup s = read_ice_setup(deck, std::move(solids));
+  IceSetup s = read_ice_setup(deck, std::move(solids), mpmice_burn_model_factories());
   if (s.implicit.enabled)
     root.require_child("CFD").require_child("ICE").missing_feature("<ImplicitSolver> in MPMICE (explicit pressure only so far)");
-  if (!s.models.empty())
-    root.missing_feature("<Models> (mass exchange / reaction models) in MPMICE");
+  // <Models>: the burn models of mpmice/BurnModels.h; the ICE models (fluid
+  // reactant and product) are not wired into the coupled step yet.
+  for (const IceModelP& m : s.models)
+    if (!dynamic_cast<const SolidBurnModel*>(m.get()))
+      root.require_child("Models").missing_feature("<Model type=\"" + m->type() + "\"> in MPMICE (implemented there: Simple_Burn, Steady_Burn)");
   if (s.lodi.enabled) root.require_child("Grid").missing_feature("LODI boundary conditions in MPMICE");
   auto ice = std::make_unique<IceComponent>(std::move(s));
   return std::make_unique<MpmIceComponent>(std::move(mpm), std::move(ice), p_ref);

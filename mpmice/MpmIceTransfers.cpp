@@ -67,6 +67,11 @@ void MpmIceComponent::solid_state_to_cells() {
       for (std::size_t i = 0; i < p.size(); ++i)
         view.weights(i, [&](std::size_t gi, double w) { mT[gi] += p.mass[i] * p.temperature[i] * w; });
     });
+    // T_g = sum m_p T_p S_gp / m_g, kept for output (g.temperature).
+    node_temperature_.resize(mpm_->materials().size());
+    node_temperature_[s].assign(ng.count(), 0.0);
+    for (std::size_t gi = 0; gi < ng.count(); ++gi)
+      if (ng.mass[gi] > 0.0) node_temperature_[s][gi] = mT[gi] / ng.mass[gi];
     const IntVec3 off = node_offset(g, ng);
     const std::array<bool, 6> symmetric = symmetry_faces(mm.bcs);
     const IceMaterialSpec& spec = is.materials[s];

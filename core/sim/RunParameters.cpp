@@ -51,6 +51,11 @@ std::set<std::string> ArchiverParameters::labels() const {
   return out;
 }
 
+std::string canonical_save_label(const std::string& label) {
+  if (label.size() > 3 && label.compare(0, 2, "p.") == 0 && label.back() == '+') return label.substr(0, label.size() - 1);
+  return label;
+}
+
 ArchiverParameters read_archiver_parameters(const DeckNode& a) {
   ArchiverParameters p;
   p.filebase = a.get_string("filebase", "");
@@ -70,7 +75,7 @@ ArchiverParameters read_archiver_parameters(const DeckNode& a) {
   }
   for (const DeckNode* s : a.children_named("save")) {
     SaveRequest r;
-    r.label = s->require_attribute("label");
+    r.label = canonical_save_label(s->require_attribute("label"));
     r.material = s->attribute("material");
     p.saves.push_back(r);
   }

@@ -22,6 +22,10 @@ struct TimeParameters {
   double timestep_multiplier = 1.0;        // <timestep_multiplier> (CFL-like factor)
 };
 
+// A <save label> as the components name it: Uintah's relocated particle
+// labels "p.x+", "p.mass+", ... (the end-of-step values) are saved as "p.x", ...
+std::string canonical_save_label(const std::string& label);
+
 struct SaveRequest {
   std::string label;       // <save label="...">
   std::optional<std::string> material;  // material="..." attribute

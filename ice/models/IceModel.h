@@ -14,6 +14,7 @@
 // reactant into product moves equal and opposite amounts, so reactant +
 // product conserve mass, momentum and energy to round-off (energy up to the
 // released heat E0 dm).
+#include <functional>
 #include <map>
 #include <memory>
 #include <set>
@@ -88,10 +89,16 @@ class IceModel {
 
 using IceModelP = std::shared_ptr<IceModel>;
 
+// Models a coupled component supplies (MPMICE's burn models, mpmice/): type
+// -> factory, tried before the ICE ones.
+using IceModelFactory = std::function<IceModelP(const DeckNode& model, const IceSetup& setup)>;
+using IceModelFactories = std::map<std::string, IceModelFactory>;
+
 // <Models><Model type=...> and <CFD><ICE><ADD_HEAT> of the deck, checked
 // against the ICE materials of `setup` (names or indices). Unknown type:
 // DeckError listing the registered ones; a Vaango type Tephra lacks: exit 3.
-std::vector<IceModelP> parse_ice_models(const DeckNode& root, const IceSetup& setup);
+std::vector<IceModelP> parse_ice_models(const DeckNode& root, const IceSetup& setup,
+                                        const IceModelFactories& extra = {});
 
 // Registered <Model type> keys (tephra --list Model).
 std::vector<std::string> ice_model_types();

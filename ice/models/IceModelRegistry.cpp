@@ -69,7 +69,7 @@ std::size_t ModelParams::material(const char* name, const IceSetup& setup) {
   n.fail("no ICE material named '" + v + "' (materials: " + names + ")");
 }
 
-std::vector<IceModelP> parse_ice_models(const DeckNode& root, const IceSetup& setup) {
+std::vector<IceModelP> parse_ice_models(const DeckNode& root, const IceSetup& setup, const IceModelFactories& extra) {
   std::vector<IceModelP> out;
   if (const DeckNode* cfd = root.child("CFD"))
     if (const DeckNode* ice = cfd->child("ICE"))
@@ -79,6 +79,10 @@ std::vector<IceModelP> parse_ice_models(const DeckNode& root, const IceSetup& se
   for (const DeckNode& m : models->children) {
     if (m.name != "Model") m.fail("<Models> holds <Model> elements only");
     const std::string type = m.require_attribute("type");
+    if (auto e = extra.find(type); e != extra.end()) {
+      out.push_back(e->second(m, setup));
+      continue;
+    }
     auto it = factories().find(type);
     if (it != factories().end()) {
       out.push_back(it->second(m, setup));

@@ -111,7 +111,7 @@ PreparedRun prepare(const std::string& deck_path) {
   // Every saved label must be one the component can produce.
   std::set<std::string> known = r.component->known_labels();
   for (const DeckNode* s : r.deck->root.require_child("DataArchiver").children_named("save")) {
-    std::string label = s->require_attribute("label");
+    std::string label = canonical_save_label(s->require_attribute("label"));
     if (!known.count(label)) s->missing_feature("saving label '" + label + "' with " + r.component->name());
   }
   return r;

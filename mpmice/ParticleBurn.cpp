@@ -1,0 +1,206 @@
+// The particle side of the burn models (mpmice/SolidBurn.h; Vaango theory
+// manual sec. 26.1.3 step 4 "mass conversion").
+//
+// Rule. Cell c burns dm_c. The particles' share of cell c is W_c(x_p) =
+// sum_{n in c} w_n S_np (w_n the node -> cell weight of step 1,
+// CellProjection.h; S_np the particle's shape function), so the particles'
+// mass in the cell is M'_c = sum_p m_p W_c(x_p). The cell takes the fraction
+//   f_c = min(dm_c / M'_c, 1)
+// of every particle's share: particle p loses
+//   dm_p = m_p sum_c f_c W_c(x_p) = m_p sum_n S_np phi_n,  phi_n = w_n sum_{c ∋ n} f_c
+// (phi_n: the node's burn fraction; interior cells only). Summed over the
+// particles the loss in cell c is f_c M'_c = min(dm_c, M'_c) exactly, so the
+// particles lose what the product gains to round-off. A particle left with
+// m_p - dm_p <= <minimum_particle_mass> burns entirely (its remainder is
+// split over its cells in proportion to f_c W_c): the product gets it, and
+// MPM's end-of-step deletion removes the empty particle. The particle's
+// volume (V_p and V0_p) shrinks with its mass; its momentum dm_p v_p and
+// energy dm_p c_v T_p go with the burned mass.
+//
+// Uintah does the same in two steps: MPMICE's interpolateCCToNC sends the
+// cell's burned-mass fraction to the nodes, and interpolateToParticlesAndUpdate
+// scales p.mass and p.volume by 1 - sum_n S_np (node fraction) at the end of
+// the step; its node fraction is not built from the same weights as the cell
+// mass, so the particles do not lose exactly the product's mass. Here the
+// mass leaves the particles at step 4, and the node sums of this step's P2G
+// (m_g, m_g v_g, V_g and the body force m_g b) drop by the node sums of the
+// removed mass (folded at symmetry planes as P2G folds), so the rest of the
+// step (internal force, accelerations, the solid's Lagrangian cell values
+// with the same loss) works on the remaining solid.
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <vector>
+
+#include "core/grid/Loop.h"
+#include "mpm/SymmetryFold.h"
+#include "mpm/shape/AxisStencils.h"
+#include "mpmice/CellProjection.h"
+#include "mpmice/MpmIceComponent.h"
+
+namespace tephra {
+
+void MpmIceComponent::corner_masses(std::size_t s, const IntVec3& c, double wm[8]) const {
+  const MpmMaterial& mm = mpm_->materials()[s];
+  const NodeGrid& ng = mm.grid;
+  const IntVec3 off = node_offset(ice_->grid(), ng);
+  const std::array<bool, 6> symmetric = symmetry_faces(mm.bcs);
+  for (int n = 0; n < 8; ++n) {
+    const IntVec3 node = c + off + IntVec3(n & 1, (n >> 1) & 1, (n >> 2) & 1);
+    wm[n] = node_cell_weight(ng, symmetric, node) * ng.mass[ng.index(node)];
+  }
+}
+
+// The cell holding x_p: floor((x_p - lower)/dx), interior cells only.
+void MpmIceComponent::particles_per_cell(std::size_t s, CellScalars& out) const {
+  const Grid& g = ice_->grid();
+  out.fill(0.0);
+  for (const Vec3& x : mpm_->materials()[s].particles.x) {
+    IntVec3 c;
+    for (int d = 0; d < 3; ++d) c[d] = int(std::floor((x[d] - g.lower[d]) / g.dx[d]));
+    if ((c.array() < 0).any() || (c.array() >= g.cells.array()).any()) continue;
+    for (std::size_t pi = 0; pi < g.patches.size(); ++pi) {
+      const Patch& p = g.patches[pi];
+      if ((c.array() >= p.lo.array()).all() && (c.array() < p.hi.array()).all()) {
+        out[pi](c) += 1.0;
+        break;
+      }
+    }
+  }
+}
+
+void MpmIceComponent::burn_particles(std::size_t s, const CellScalars& dm, BurnedCells& out) {
+  const Grid& g = ice_->grid();
+  MpmMaterial& mm = mpm_->materials()[s];
+  NodeGrid& ng = mm.grid;
+  Particles& p = mm.particles;
+  const IntVec3 off = node_offset(g, ng);
+  const std::array<bool, 6> symmetric = symmetry_faces(mm.bcs);
+  const double min_mass = mpm_->setup().flags.minimum_particle_mass;
+  const double cv = ice_->setup().materials[s].cv;
+  const Vec3 gravity = mpm_->setup().gravity;
+  out.mass.fill(0.0);
+  out.energy.fill(0.0);
+  out.momentum.fill(Vec3::Zero());
+
+  // Interior cells, flat: index i + nx (j + ny k); the patch holding each.
+  const IntVec3 nc = g.cells;
+  const std::size_t ncell = std::size_t(nc[0]) * nc[1] * nc[2];
+  auto flat = [&](const IntVec3& c) { return std::size_t(c[0]) + std::size_t(nc[0]) * (std::size_t(c[1]) + std::size_t(nc[1]) * c[2]); };
+  std::vector<double> dmc(ncell, 0.0);
+  std::vector<int> patch_of(ncell, 0);
+  bool any = false;
+  for (std::size_t pi = 0; pi < g.patches.size(); ++pi)
+    for_each_cell_serial(g.patches[pi].cells(), [&](int i, int j, int k) {
+      const IntVec3 c(i, j, k);
+      dmc[flat(c)] = dm[pi](c);
+      patch_of[flat(c)] = int(pi);
+      any = any || dm[pi](c) > 0;
+    });
+  if (!any) return;
+  // The interior cells that share node gi (up to 8), with the node's weight.
+  auto for_node_cells = [&](std::size_t gi, auto&& fn) {
+    const std::size_t nx = std::size_t(ng.n[0]), ny = std::size_t(ng.n[1]);
+    const IntVec3 node(int(gi % nx), int((gi / nx) % ny), int(gi / (nx * ny)));
+    const double w = node_cell_weight(ng, symmetric, node);
+    for (int q = 0; q < 8; ++q) {
+      const IntVec3 c = node - off - IntVec3(q & 1, (q >> 1) & 1, (q >> 2) & 1);
+      if ((c.array() < 0).any() || (c.array() >= nc.array()).any()) continue;
+      fn(flat(c), w);
+    }
+  };
+  // M'_c = sum_p m_p W_c(x_p), from the unfolded node sums m'_n = sum_p m_p S_np.
+  std::vector<double> m_unfolded(ng.count(), 0.0);
+  visit_stencils(mm.stencils, [&](const auto& view) {
+    for (std::size_t i = 0; i < p.size(); ++i)
+      view.weights(i, [&](std::size_t gi, double S) { m_unfolded[gi] += p.mass[i] * S; });
+  });
+  std::vector<double> Mc(ncell, 0.0);
+  for (std::size_t gi = 0; gi < ng.count(); ++gi)
+    if (m_unfolded[gi] > 0) for_node_cells(gi, [&](std::size_t c, double w) { Mc[c] += w * m_unfolded[gi]; });
+  std::vector<double> f(ncell, 0.0);
+  for (std::size_t c = 0; c < ncell; ++c)
+    if (dmc[c] > 0 && Mc[c] > 0) f[c] = std::min(dmc[c] / Mc[c], 1.0);
+  // phi_n = w_n sum_{c ∋ n} f_c.
+  std::vector<double> phi(ng.count(), 0.0);
+  for (std::size_t gi = 0; gi < ng.count(); ++gi)
+    if (m_unfolded[gi] > 0) for_node_cells(gi, [&](std::size_t c, double w) { phi[gi] += w * f[c]; });
+
+  // The particles: their loss, its cell shares, and the node sums of the loss.
+  NodeGrid& d = burn_grid_;
+  d.origin = ng.origin;
+  d.h = ng.h;
+  d.n = ng.n;
+  d.extra = ng.extra;
+  d.node_stress = false;
+  d.reset();
+  std::vector<double> cell_mass(ncell, 0.0), cell_energy(ncell, 0.0);
+  std::vector<Vec3> cell_mom(ncell, Vec3::Zero());
+  visit_stencils(mm.stencils, [&](const auto& view) {
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      double a = 0;
+      view.weights(i, [&](std::size_t gi, double S) { a += S * phi[gi]; });
+      if (!(a > 0)) continue;
+      const double m0 = p.mass[i];
+      double dmp = std::min(a * m0, m0);
+      if (m0 - dmp <= min_mass) dmp = m0;
+      const double scale = dmp / a;  // cell c's share: scale x S w_n f_c
+      const Vec3 v = p.v[i];
+      const double e = cv * p.temperature[i];
+      view.weights(i, [&](std::size_t gi, double S) {
+        if (!(phi[gi] > 0)) return;
+        for_node_cells(gi, [&](std::size_t c, double w) {
+          if (!(f[c] > 0)) return;
+          const double share = scale * S * w * f[c];
+          cell_mass[c] += share;
+          cell_mom[c] += share * v;
+          cell_energy[c] += share * e;
+        });
+        d.mass[gi] += dmp * S;
+        d.velocity[gi] += dmp * S * v;  // momentum until the fold below
+        d.external_force[gi] += dmp * S * gravity;
+      });
+      const double ratio = dmp == m0 ? 0.0 : (m0 - dmp) / m0;
+      const double dV = p.volume[i] * (1 - ratio);
+      view.weights(i, [&](std::size_t gi, double S) { d.volume[gi] += dV * S; });
+      p.mass[i] = m0 - dmp;
+      if (dmp == m0) p.mass[i] = 0.0;
+      p.volume[i] *= ratio;
+      p.volume0[i] *= ratio;
+    }
+  });
+  // Fold the removed sums as P2G folds its sums (symmetry planes), then take
+  // them out of this step's node sums.
+  for (std::size_t gi = 0; gi < d.count(); ++gi)
+    if (d.mass[gi] > 0) d.velocity[gi] /= d.mass[gi];
+  fold_symmetry_particle_sums(mm.bcs, d);
+  for (std::size_t gi = 0; gi < ng.count(); ++gi) {
+    if (!(d.mass[gi] > 0)) continue;
+    const double m_old = ng.mass[gi];
+    const Vec3 P = ng.velocity[gi] * m_old - d.velocity[gi] * d.mass[gi];
+    double m_new = m_old - d.mass[gi];
+    if (m_new <= 1e-12 * m_old) {  // the node's solid is gone (round-off left)
+      ng.mass[gi] = 0;
+      ng.velocity[gi] = Vec3::Zero();
+      ng.volume[gi] = 0;
+      ng.external_force[gi] = Vec3::Zero();
+      continue;
+    }
+    ng.mass[gi] = m_new;
+    ng.velocity[gi] = P / m_new;
+    ng.volume[gi] = std::max(0.0, ng.volume[gi] - d.volume[gi]);
+    ng.external_force[gi] -= d.external_force[gi];
+  }
+  mm.bcs.apply(ng, ng.velocity);
+  for (std::size_t c = 0; c < ncell; ++c) {
+    if (!(cell_mass[c] > 0)) continue;
+    const std::size_t pi = std::size_t(patch_of[c]);
+    const IntVec3 cell(int(c % std::size_t(nc[0])), int((c / std::size_t(nc[0])) % std::size_t(nc[1])),
+                       int(c / (std::size_t(nc[0]) * nc[1])));
+    out.mass[pi](cell) = cell_mass[c];
+    out.momentum[pi](cell) = cell_mom[c];
+    out.energy[pi](cell) = cell_energy[c];
+  }
+}
+
+}  // namespace tephra

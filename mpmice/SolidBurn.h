@@ -1,0 +1,97 @@
+#pragma once
+// Mass conversion from an MPM solid to an ICE product gas (Vaango theory
+// manual sec. 26.1.3 step 4; the burn models of <Models>, Uintah's HEChem
+// Simple_Burn / Steady_Burn for the facts). A burn model (SolidBurnModel, an
+// IceModel) decides how much solid mass dm_c each surface cell burns in the
+// step; the MPMICE component (SolidBurnSupport, mpmice/ParticleBurn.cpp)
+// takes that mass from the particles and returns what was actually removed,
+// cell by cell, which the model hands to ICE as sources:
+//   reactant:  -dm, -P, -E, -dm v_s        product: +dm, +P, +E + dm Enthalpy, +dm v_s
+// (mass, momentum, internal energy, specific volume; v_s the solid's
+// specific volume in the cell). P and E are the momentum sum_p dm_p v_p and
+// energy sum_p dm_p c_v T_p of the removed particle mass, so the particles
+// lose exactly what the product gains (mass and momentum to round-off).
+#include <cstddef>
+#include <string>
+
+#include "ice/models/IceModel.h"
+
+namespace tephra {
+
+// What the particles gave up in each interior cell during one step.
+struct BurnedCells {
+  CellScalars mass;      // [kg]
+  CellVectors momentum;  // [kg m/s]
+  CellScalars energy;    // [J]: c_v T of the removed mass
+};
+
+class SolidBurnSupport {
+ public:
+  virtual ~SolidBurnSupport() = default;
+  // Corner values wm[n] = w_n m_n of interior cell c for solid s: its 8 nodes'
+  // masses (step-1 P2G) times their node -> cell weights (CellProjection.h),
+  // node n at corner (n & 1, (n >> 1) & 1, (n >> 2) & 1).
+  virtual void corner_masses(std::size_t s, const IntVec3& c, double wm[8]) const = 0;
+  // Takes dm[c] (kg, interior cells) from solid s's particles (at most the
+  // cell's particle mass) and fills `out` with what was removed.
+  virtual void burn_particles(std::size_t s, const CellScalars& dm, BurnedCells& out) = 0;
+  // The number of solid s's particles in each interior cell (Uintah's numPPC).
+  virtual void particles_per_cell(std::size_t s, CellScalars& out) const = 0;
+};
+
+// The cell a burn law sees.
+struct BurnCell {
+  const IceModelInput* in = nullptr;
+  std::size_t patch = 0;
+  IntVec3 c = IntVec3::Zero();
+  double area = 0;         // burning surface area in the cell [m^2] (SimpleBurn.h)
+  double temperature = 0;  // the law's temperature (Simple_Burn: the hottest material above the threshold)
+  double pressure = 0;     // the law's pressure (Simple_Burn: press_equil_CC)
+  double solid_mass = 0;   // the solid's cell mass rho_CC V
+  double particles = 0;    // the solid's particles in the cell
+};
+
+// The common part of the burn models: surface cells, the particle side,
+// sources, totalMassBurned / totalHeatReleased (sums over the step, as
+// Uintah's sum_vartype), and the fields <type>.onSurface (area) and
+// <type>.BurningCell (1 where mass burned).
+class SolidBurnModel : public IceModel {
+ public:
+  // label_prefix: the prefix of the field labels (Vaango: "SimpleBurn", "SteadyBurn").
+  SolidBurnModel(std::string type, std::string label_prefix, std::size_t reactant, std::size_t product,
+                 double enthalpy, double threshold_temperature);
+  std::string type() const override { return type_; }
+  std::size_t reactant() const { return reactant_; }
+  void attach(SolidBurnSupport* support) { support_ = support; }
+  void initialize(const Grid& grid, const std::vector<IceMaterialFields>& mats) override;
+  void compute_sources(const IceModelInput& in, IceModelSources& out) override;
+  std::set<std::string> labels() const override;
+  std::vector<ModelField> fields() const override;
+  void reductions(const std::set<std::string>& labels, std::map<std::string, std::vector<double>>& out) const override;
+  // Simple_Burn's cell rule (the default): a surface cell (SimpleBurn.h) with
+  // temperature = the hottest start-of-step temperature among the materials
+  // with theta > 0.2 above ThresholdTemp (0 if none), pressure = press_equil_CC.
+  // Returns false where the cell cannot burn.
+  virtual bool select_cell(const double wm[8], BurnCell& cell) const;
+  // The solid's particle count in cell c of patch pi (extra cells: 0).
+  double particles_in(std::size_t pi, const IntVec3& c) const { return ppc_[pi](c); }
+  std::size_t product() const { return product_; }
+  double mass_burned_last_step() const { return total_burned_; }        // sum_c dm_c of the last step
+  const Vec3& momentum_burned_last_step() const { return total_momentum_; }  // sum_c P_c (to the product)
+
+ protected:
+  // The mass the law burns in cell `cell` over dt (before the particle cap).
+  virtual double burn_mass(const BurnCell& cell) = 0;
+
+ private:
+  std::string type_, prefix_;
+  std::size_t reactant_, product_;
+  double enthalpy_, threshold_temperature_;
+  SolidBurnSupport* support_ = nullptr;
+  CellScalars dm_, on_surface_, burning_, ppc_;
+  BurnedCells burned_;
+  double total_burned_ = 0, total_heat_ = 0;
+  Vec3 total_momentum_ = Vec3::Zero();
+};
+
+}  // namespace tephra
