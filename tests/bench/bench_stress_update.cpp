@@ -12,6 +12,7 @@
 // processes' slices too), best of 3 passes; history and stress reset before each pass. Issue 4's target: a von Mises J2 return < 1 us per particle-step.
 //
 // usage: bench_stress_update [points=2048] [steps=100]
+#include <cmath>
 #include <algorithm>
 #include <ctime>
 #include <cstdio>
@@ -95,6 +96,16 @@ double run(const ConstitutiveModel& m, int n, int steps, double* plastic_fractio
     hist.push_back(std::move(col));
   }
   std::vector<std::span<double>> cols(hist.begin(), hist.end());
+  // Point context for the models that read it (needs_position():
+  // polar_orthotropic_hypoelastic, program_burn): points on a ring of radius
+  // 0.1 m about the z axis, reference volume 1e-9 m^3 (a 1 mm particle).
+  std::vector<Eigen::Vector3d> x(n);
+  for (int i = 0; i < n; ++i) {
+    const double a = 6.283185307179586 * (i + 0.5) / n;
+    x[i] = Eigen::Vector3d(0.1 * std::cos(a), 0.1 * std::sin(a), 0.0);
+  }
+  std::vector<double> V0(n, 1e-9);
+  double t = 0.0;
   auto step = [&](double h) {
     SolidUpdateInput in;
     in.dt = h;
@@ -104,6 +115,10 @@ double run(const ConstitutiveModel& m, int n, int steps, double* plastic_fractio
     in.L = Ls;
     in.temperature = T;
     in.stress_old = stress;
+    in.position = x;
+    in.time = t + h;
+    in.reference_volume = V0;
+    t += h;
     const SolidUpdateOutput out{stress, c, W, work, heat, cols};
     return m.update(in, out);
   };
