@@ -2,10 +2,20 @@
 // The MPMICE burn models of <Models> (mpmice/SolidBurn.h): Simple_Burn,
 // Steady_Burn. read_ice_setup takes them through these factories; the
 // MpmIceComponent attaches itself to them (SolidBurnModel::attach).
+#include <cstddef>
+
 #include "ice/models/IceModel.h"
 
 namespace tephra {
 
+class ModelParams;
+struct IceSetup;
+
 IceModelFactories mpmice_burn_model_factories();
+
+// Deck check every burn model makes: <fromMaterial> (index r) must be an MPM
+// material, <toMaterial> (index p) an ICE one; `what` names the model.
+void check_reactant_product(const ModelParams& mp, const IceSetup& setup, std::size_t r, std::size_t p,
+                            const char* what);
 
 }  // namespace tephra

@@ -2,7 +2,10 @@
 // surface functions in mpmice/SimpleBurn.h):
 //   dm = dt A BurnCoeff (p_equil/refPressure)^0.778  where T > ThresholdTemp
 //   and p_equil > ThresholdPressure, at most the solid's cell mass.
+#include <string>
+
 #include "core/deck/DeckNode.h"
+#include "ice/IceSetup.h"
 #include "ice/models/ModelSupport.h"
 #include "mpmice/BurnModels.h"
 #include "mpmice/SimpleBurn.h"
@@ -27,15 +30,6 @@ class SimpleBurnModel final : public SolidBurnModel {
   SimpleBurnParams prm_;
 };
 
-// fromMaterial must be an MPM material, toMaterial an ICE one.
-void check_reactant_product(const ModelParams& mp, const IceSetup& setup, std::size_t r, std::size_t p,
-                            const char* what) {
-  if (!setup.materials[r].lagrangian)
-    mp.node().require_child("fromMaterial").fail(std::string(what) + ": <fromMaterial> must be an MPM material");
-  if (setup.materials[p].lagrangian)
-    mp.node().require_child("toMaterial").fail(std::string(what) + ": <toMaterial> must be an ICE material");
-}
-
 IceModelP make_simple_burn(const DeckNode& model, const IceSetup& setup) {
   ModelParams mp(model_block(model, "Simple_Burn"), "Simple_Burn");
   const std::size_t r = mp.material("fromMaterial", setup), p = mp.material("toMaterial", setup);
@@ -51,6 +45,14 @@ IceModelP make_simple_burn(const DeckNode& model, const IceSetup& setup) {
 }
 
 }  // namespace
+
+void check_reactant_product(const ModelParams& mp, const IceSetup& setup, std::size_t r, std::size_t p,
+                            const char* what) {
+  if (!setup.materials[r].lagrangian)
+    mp.node().require_child("fromMaterial").fail(std::string(what) + ": <fromMaterial> must be an MPM material");
+  if (setup.materials[p].lagrangian)
+    mp.node().require_child("toMaterial").fail(std::string(what) + ": <toMaterial> must be an ICE material");
+}
 
 IceModelP make_steady_burn(const DeckNode& model, const IceSetup& setup);  // SteadyBurnModel.cpp
 

@@ -90,8 +90,7 @@ class SteadyBurnModel final : public SolidBurnModel {
 IceModelP make_steady_burn(const DeckNode& model, const IceSetup& setup) {
   ModelParams mp(model_block(model, "Steady_Burn"), "Steady_Burn");
   const std::size_t r = mp.material("fromMaterial", setup), p = mp.material("toMaterial", setup);
-  if (!setup.materials[r].lagrangian) mp.node().require_child("fromMaterial").fail("Steady_Burn: <fromMaterial> must be an MPM material");
-  if (setup.materials[p].lagrangian) mp.node().require_child("toMaterial").fail("Steady_Burn: <toMaterial> must be an ICE material");
+  check_reactant_product(mp, setup, r, p, "Steady_Burn");
   WsbParams w;
   w.R = mp.positive("IdealGasConst");
   w.Ac = mp.positive("PreExpCondPh");

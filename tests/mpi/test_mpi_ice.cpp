@@ -34,40 +34,11 @@
 namespace tephra {
 namespace {
 
-DeckNode leaf(const std::string& name, const std::string& text) {
-  DeckNode n;
-  n.name = name;
-  n.text = text;
-  return n;
-}
-
-// The implicit solver block of test_ice_implicit.cpp (Sod with the explicit
-// time step: knob 1).
-void add_implicit(DeckNode& root) {
-  DeckNode& ice = test::deck_node(root, {"CFD", "ICE"});
-  DeckNode is = leaf("ImplicitSolver", "");
-  is.children.push_back(leaf("max_outer_iterations", "20"));
-  is.children.push_back(leaf("outer_iteration_tolerance", "1e-10"));
-  is.children.push_back(leaf("iters_before_timestep_restart", "10"));
-  DeckNode p = leaf("Parameters", "");
-  p.attributes.push_back({"variable", "implicitPressure"});
-  p.children.push_back(leaf("solver", "cg"));
-  p.children.push_back(leaf("preconditioner", "pfmg"));
-  p.children.push_back(leaf("tolerance", "1e-12"));
-  p.children.push_back(leaf("maxiterations", "200"));
-  is.children.push_back(p);
-  ice.children.push_back(is);
-  DeckNode tc = leaf("TimestepControl", "");
-  tc.children.push_back(leaf("Scheme_for_delT_calc", "aggressive"));
-  tc.children.push_back(leaf("knob_for_speedSound", "1.0"));
-  ice.children.push_back(tc);
-}
-
 test::IceRun make_run(const std::string& deck, const std::string& patches, bool whole, bool implicit = false) {
   test::IceRun r;
   r.deck = load_deck(deck);
   test::deck_node(r.deck->root, {"Grid", "Level", "Box", "patches"}).text = patches;
-  if (implicit) add_implicit(r.deck->root);
+  if (implicit) test::add_implicit_solver(r.deck->root, "1.0");
   r.deck->root.finalize_parents();
   r.ice = make_ice_component(*r.deck);
   if (whole) r.ice->keep_whole_level();

@@ -15,6 +15,35 @@ DeckNode& deck_node(DeckNode& root, std::initializer_list<const char*> path) {
   return *n;
 }
 
+DeckNode leaf(const std::string& name, const std::string& text) {
+  DeckNode n;
+  n.name = name;
+  n.text = text;
+  return n;
+}
+
+void add_implicit_solver(DeckNode& root, const std::string& knob, const std::string& outer_tol) {
+  DeckNode& ice = deck_node(root, {"CFD", "ICE"});
+  DeckNode is = leaf("ImplicitSolver", "");
+  is.children.push_back(leaf("max_outer_iterations", "20"));
+  is.children.push_back(leaf("outer_iteration_tolerance", outer_tol));
+  is.children.push_back(leaf("iters_before_timestep_restart", "10"));
+  DeckNode p = leaf("Parameters", "");
+  p.attributes.push_back({"variable", "implicitPressure"});
+  p.children.push_back(leaf("solver", "cg"));
+  p.children.push_back(leaf("preconditioner", "pfmg"));
+  p.children.push_back(leaf("tolerance", "1e-12"));
+  p.children.push_back(leaf("maxiterations", "200"));
+  is.children.push_back(p);
+  ice.children.push_back(is);
+  if (knob.empty()) return;
+  DeckNode tc = leaf("TimestepControl", "");
+  tc.children.push_back(leaf("Scheme_for_delT_calc", "aggressive"));
+  tc.children.push_back(leaf("knob_for_speedSound", knob));
+  ice.children.push_back(tc);
+}
+
+
 IceRun make_ice_run(const std::string& deck_path, const std::function<void(DeckNode&)>& edit) {
   IceRun r;
   r.deck = load_deck(deck_path);

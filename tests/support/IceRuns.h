@@ -16,6 +16,15 @@ namespace tephra::test {
 // previous); throws std::runtime_error if missing.
 DeckNode& deck_node(DeckNode& root, std::initializer_list<const char*> path);
 
+// A deck element with text and no children.
+DeckNode leaf(const std::string& name, const std::string& text);
+
+// Adds <CFD><ICE><ImplicitSolver> as in rayleigh.ups with a reachable inner
+// tolerance (cg + pfmg, 1e-12, 200 iterations; 20 outer iterations to
+// `outer_tol`), and, when `knob` is not empty, <TimestepControl> aggressive
+// with that speed-of-sound knob (else Uintah's default knob 0.5).
+void add_implicit_solver(DeckNode& root, const std::string& knob = "", const std::string& outer_tol = "1e-10");
+
 struct IceRun {
   std::unique_ptr<Deck> deck;
   std::unique_ptr<IceComponent> ice;

@@ -7,33 +7,6 @@
 
 namespace tephra::test {
 
-namespace {
-
-DeckNode leaf(const std::string& name, const std::string& text) {
-  DeckNode n;
-  n.name = name;
-  n.text = text;
-  return n;
-}
-
-void add_implicit(DeckNode& root) {
-  DeckNode& ice = deck_node(root, {"CFD", "ICE"});
-  DeckNode is = leaf("ImplicitSolver", "");
-  is.children.push_back(leaf("max_outer_iterations", "20"));
-  is.children.push_back(leaf("outer_iteration_tolerance", "1e-10"));
-  is.children.push_back(leaf("iters_before_timestep_restart", "10"));
-  DeckNode p = leaf("Parameters", "");
-  p.attributes.push_back({"variable", "implicitPressure"});
-  p.children.push_back(leaf("solver", "cg"));
-  p.children.push_back(leaf("preconditioner", "pfmg"));
-  p.children.push_back(leaf("tolerance", "1e-12"));
-  p.children.push_back(leaf("maxiterations", "200"));
-  is.children.push_back(p);
-  ice.children.push_back(is);
-}
-
-}  // namespace
-
 GasState sod_left() { return {1.1768292682926831, 0.0, 101325.0}; }
 GasState sod_right() { return {0.11768292682926831, 0.0, 10132.5}; }
 
@@ -53,7 +26,7 @@ IceRun make_sod_run(const SodOptions& o) {
       c << o.cfl;
       deck_node(root, {"CFD", "cfl"}).text = c.str();
     }
-    if (o.implicit) add_implicit(root);
+    if (o.implicit) add_implicit_solver(root);
   };
   return make_ice_run(shared_dir() + "/decks/inputs/ICE/riemann_sm.ups", edit);
 }

@@ -33,42 +33,13 @@
 namespace tephra {
 namespace {
 
-DeckNode leaf(const std::string& name, const std::string& text) {
-  DeckNode n;
-  n.name = name;
-  n.text = text;
-  return n;
-}
-
-// <ImplicitSolver> as in rayleigh.ups, with a reachable inner tolerance, and
-// <TimestepControl> aggressive with the given speed-of-sound knob.
-void add_implicit(DeckNode& root, const std::string& knob, const std::string& outer_tol = "1e-10") {
-  DeckNode& ice = test::deck_node(root, {"CFD", "ICE"});
-  DeckNode is = leaf("ImplicitSolver", "");
-  is.children.push_back(leaf("max_outer_iterations", "20"));
-  is.children.push_back(leaf("outer_iteration_tolerance", outer_tol));
-  is.children.push_back(leaf("iters_before_timestep_restart", "10"));
-  DeckNode p = leaf("Parameters", "");
-  p.attributes.push_back({"variable", "implicitPressure"});
-  p.children.push_back(leaf("solver", "cg"));
-  p.children.push_back(leaf("preconditioner", "pfmg"));
-  p.children.push_back(leaf("tolerance", "1e-12"));
-  p.children.push_back(leaf("maxiterations", "200"));
-  is.children.push_back(p);
-  ice.children.push_back(is);
-  DeckNode tc = leaf("TimestepControl", "");
-  tc.children.push_back(leaf("Scheme_for_delT_calc", "aggressive"));
-  tc.children.push_back(leaf("knob_for_speedSound", knob));
-  ice.children.push_back(tc);
-}
-
 test::IceRun sod(int n, bool implicit) {
   auto edit = [&](DeckNode& root) {
     DeckNode& box = test::deck_node(root, {"Grid", "Level", "Box"});
     test::deck_node(box, {"resolution"}).text = "[" + std::to_string(n) + ",1,1]";
     const double w = 1.0 / n;
     test::deck_node(box, {"upper"}).text = "[1," + std::to_string(w) + "," + std::to_string(w) + "]";
-    if (implicit) add_implicit(root, "1.0");
+    if (implicit) test::add_implicit_solver(root, "1.0");
   };
   test::IceRun r = test::make_ice_run(test::shared_dir() + "/decks/inputs/ICE/riemann_sm.ups", edit);
   test::run_to(r);
