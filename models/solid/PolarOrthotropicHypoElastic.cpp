@@ -8,6 +8,7 @@
 #include <Eigen/LU>
 
 #include "models/ModelParameters.h"
+#include "models/VectorParameter.h"
 #include "models/solid/Kinematics.h"
 #include "models/solid/PointLoop.h"
 #include "models/solid/PolarNewton.h"
@@ -41,15 +42,6 @@ void plane_basis(const PolarOrthotropicParams& p, Eigen::Vector3d& a, Eigen::Vec
   b = ez.cross(a);
 }
 
-bool parse_point(const std::string& text, Eigen::Vector3d& v) {
-  std::string t = text;
-  for (char& c : t)
-    if (c == '[' || c == ']' || c == ',') c = ' ';
-  std::istringstream in(t);
-  std::string rest;
-  if (!(in >> v[0] >> v[1] >> v[2]) || (in >> rest)) return false;
-  return v.allFinite();
-}
 }  // namespace
 
 Eigen::Matrix<double, 6, 6> PolarOrthotropicParams::compliance() const {
@@ -133,10 +125,8 @@ long PolarOrthotropicHypoElastic::update(const SolidUpdateInput& in, const Solid
 
 ConstitutiveModelP PolarOrthotropicHypoElastic::create(const ModelParameters& params) {
   PolarOrthotropicParams p;
-  if (!parse_point(params.get_string("symmetry_axis_top", ""), p.top))
-    params.fail("symmetry_axis_top", "symmetry_axis_top must be a point [x, y, z]");
-  if (!parse_point(params.get_string("symmetry_axis_bottom", ""), p.bottom))
-    params.fail("symmetry_axis_bottom", "symmetry_axis_bottom must be a point [x, y, z]");
+  p.top = vector_parameter(params, "symmetry_axis_top");
+  p.bottom = vector_parameter(params, "symmetry_axis_bottom");
   if (!((p.top - p.bottom).norm() > 0.0))
     params.fail("symmetry_axis_top", "the symmetry axis is a point (top == bottom)");
   auto pos = [&](const char* n, double& v) {

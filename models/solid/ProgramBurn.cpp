@@ -6,21 +6,10 @@
 #include <Eigen/LU>
 
 #include "models/ModelParameters.h"
+#include "models/VectorParameter.h"
 #include "models/solid/PointLoop.h"
 
 namespace tephra {
-
-namespace {
-bool parse_vector(const std::string& text, Eigen::Vector3d& v) {
-  std::string t = text;
-  for (char& c : t)
-    if (c == '[' || c == ']' || c == ',') c = ' ';
-  std::istringstream in(t);
-  std::string rest;
-  if (!(in >> v[0] >> v[1] >> v[2]) || (in >> rest)) return false;
-  return v.allFinite();
-}
-}  // namespace
 
 double program_burn_fraction(const Eigen::Vector3d& x, double t, double mass, const ProgramBurnParams& p) {
   const double n = p.direction.norm();
@@ -84,11 +73,8 @@ ConstitutiveModelP ProgramBurn::create(const ModelParameters& params) {
   p.eos.omega = params.get_double("om");
   pos("rho0", p.rho0);
   pos("D", p.D);
-  if (!parse_vector(params.get_string("starting_location", ""), p.start))
-    params.fail("starting_location", "starting_location must be a point [x, y, z]");
-  const std::string dir = params.get_string("direction_if_plane", "");
-  if (!dir.empty() && !parse_vector(dir, p.direction))
-    params.fail("direction_if_plane", "direction_if_plane must be a vector [x, y, z]");
+  p.start = vector_parameter(params, "starting_location");
+  if (const auto dir = optional_vector_parameter(params, "direction_if_plane")) p.direction = *dir;
   p.T0 = params.get_double("T0", 0.0);
   if (!std::isfinite(p.T0)) params.fail("T0", "T0 must be finite");
   return std::make_shared<ProgramBurn>(p);

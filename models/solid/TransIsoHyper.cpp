@@ -7,6 +7,7 @@
 #include <Eigen/LU>
 
 #include "models/ModelParameters.h"
+#include "models/VectorParameter.h"
 #include "models/solid/ElasticPointLoop.h"
 
 namespace tephra {
@@ -82,20 +83,9 @@ TransIsoHyperParams read_trans_iso_hyper_params(const ModelParameters& params, c
   if (!(p.C4 > 0.0)) params.fail("c4", "c4 must be > 0");
   if (!(p.C5 >= 0.0)) params.fail("c5", "c5 must be >= 0");
   if (!(p.lambda_star >= 1.0)) params.fail("fiber_stretch", "the fibre straightening stretch must be >= 1");
-  const std::string dir = params.get_string("direction_of_symm", "");
-  {
-    std::string t = dir;
-    for (char& c : t)
-      if (c == '[' || c == ']' || c == ',') c = ' ';
-    std::istringstream in(t);
-    double a = 0, b = 0, c = 0;
-    std::string rest;
-    if (!(in >> a >> b >> c) || (in >> rest)) params.fail("direction_of_symm", "direction_of_symm must be a vector [x, y, z]");
-    p.a0 = Eigen::Vector3d(a, b, c);
-    if (!(p.a0.norm() > 0.0) || !p.a0.allFinite())
-      params.fail("direction_of_symm", "direction_of_symm must be a nonzero vector");
-    p.a0.normalize();
-  }
+  p.a0 = vector_parameter(params, "direction_of_symm");
+  if (!(p.a0.norm() > 0.0)) params.fail("direction_of_symm", "direction_of_symm must be a nonzero vector");
+  p.a0.normalize();
   // Read as Vaango requires them; they only act with failure_option = true.
   params.get_double("max_fiber_strain");
   params.get_double("max_matrix_strain");
