@@ -58,14 +58,7 @@ void MpmIceComponent::particles_per_cell(std::size_t s, CellScalars& out) const 
   for (const Vec3& x : mpm_->materials()[s].particles.x) {
     IntVec3 c;
     for (int d = 0; d < 3; ++d) c[d] = int(std::floor((x[d] - g.lower[d]) / g.dx[d]));
-    if ((c.array() < 0).any() || (c.array() >= g.cells.array()).any()) continue;
-    for (std::size_t pi = 0; pi < g.patches.size(); ++pi) {
-      const Patch& p = g.patches[pi];
-      if ((c.array() >= p.lo.array()).all() && (c.array() < p.hi.array()).all()) {
-        out[pi](c) += 1.0;
-        break;
-      }
-    }
+    if (const int pi = g.patch_owning_cell(c); pi >= 0) out[std::size_t(pi)](c) += 1.0;  // -1: outside the interior
   }
 }
 
