@@ -407,11 +407,14 @@ void MpmComponent::advance(double t, double dt, int step) {
     if (musl) {
       musl_velocity_.resize(mats.size());
       const double cell_volume = setup_.grid.dx[0] * setup_.grid.dx[1] * setup_.grid.dx[2];
+      // The USL fill limits, once per material (a pass over the particles; v and c do not change in this phase).
+      std::vector<double> fill_limit(mats.size());
+      for (std::size_t i = 0; i < mats.size(); ++i) fill_limit[i] = usl_fill_limit(courant_number(mats[i], dt));
       for (std::size_t i = 0; i < mats.size(); ++i) {
         MpmMaterial& m = mats[i];
         if (!contact && !periodic_.active()) {
           // Only the nodes keep_stable_usl_nodes keeps below (none: USL everywhere; same bits).
-          usl_needed_nodes(m.grid, usl_fill_limit(courant_number(m, dt)), cell_volume, musl_needed_);
+          usl_needed_nodes(m.grid, fill_limit[i], cell_volume, musl_needed_);
           updated_particle_grid_velocity_at(m.particles, m.stencils, m.grid, dt, musl_needed_, musl_velocity_[i]);
         } else {
           updated_particle_grid_velocity(m.particles, m.stencils, m.grid, dt,
@@ -424,20 +427,24 @@ void MpmComponent::advance(double t, double dt, int step) {
       }
       if (contact) exchange_momentum(ContactStage::Integrated, t, dt);
       for (std::size_t i = 0; i < mats.size(); ++i)  // v*_g back where USL is stable for the node
-        keep_stable_usl_nodes(mats[i].grid, usl_fill_limit(courant_number(mats[i], dt)), cell_volume,
+        keep_stable_usl_nodes(mats[i].grid, fill_limit[i], cell_volume,
                               musl_velocity_[i], mats[i].grid.velocity_star);
     }
     for (std::size_t i = 0; i < mats.size(); ++i) {
       MpmMaterial& m = mats[i];
-      if (setup_.flags.axisymmetric) axisymmetric_velocity_gradients(m.stencils, m.grid, m.L);  // + v_r / r
-      else velocity_gradients(m.stencils, m.grid, m.L);
-      if (musl) std::swap(m.grid.velocity_star, musl_velocity_[i]);  // G2P moves the particles with v*_g
       Particles& p = m.particles;
       std::swap(m.F_old, p.F);  // F_n kept as the model's input, without a copy
       // <deformation_gradient algorithm>: first_order is eq. 1.75; the series
       // approximate exp(dt l) (mpm/DeformationGradient.h).
-      update_deformation_gradients(deformation_gradient_algorithm(setup_.flags.deformation_gradient),
-                                   setup_.flags.deformation_gradient_terms, dt, m.L, m.F_old, p.F);
+      const DeformationGradientAlgorithm alg = deformation_gradient_algorithm(setup_.flags.deformation_gradient);
+      if (!setup_.flags.axisymmetric && alg == DeformationGradientAlgorithm::FirstOrder) {
+        velocity_gradients_and_first_order_F(m.stencils, m.grid, dt, m.L, m.F_old, p.F);  // one pass, same bits
+      } else {
+        if (setup_.flags.axisymmetric) axisymmetric_velocity_gradients(m.stencils, m.grid, m.L);  // + v_r / r
+        else velocity_gradients(m.stencils, m.grid, m.L);
+        update_deformation_gradients(alg, setup_.flags.deformation_gradient_terms, dt, m.L, m.F_old, p.F);
+      }
+      if (musl) std::swap(m.grid.velocity_star, musl_velocity_[i]);  // G2P moves the particles with v*_g
       if (setup_.flags.pressure_stabilization) stabilize_pressure(m.grid, p);  // eqs. 1.82-1.84
       if (m.model->rigid()) std::fill(p.F.begin(), p.F.end(), Mat3::Identity());
     }

@@ -37,17 +37,8 @@ struct NodeGrid {
   Vec3 position(int i, int j, int k) const { return origin + Vec3(i * h[0], j * h[1], k * h[2]); }
 
   // Sizes every array to count() and sets it to zero (Vaango's grid reset).
-  void reset() {
-    const std::size_t c = count();
-    mass.assign(c, 0.0);
-    volume.assign(c, 0.0);
-    velocity.assign(c, Vec3::Zero());
-    velocity_star.assign(c, Vec3::Zero());
-    acceleration.assign(c, Vec3::Zero());
-    external_force.assign(c, Vec3::Zero());
-    internal_force.assign(c, Vec3::Zero());
-    stress.assign(node_stress ? c : 0, Mat3::Zero());
-  }
+  // Threaded (NodeGrid.cpp): zero is zero for any split, so the same bits.
+  void reset();
 };
 
 }  // namespace tephra

@@ -1,5 +1,6 @@
 #include "mpm/ParticleDeletion.h"
 
+#include <algorithm>
 #include <sstream>
 
 namespace tephra {
@@ -52,7 +53,16 @@ void remove_particles(Particles& p, const std::vector<char>& keep, std::vector<s
 std::vector<char> apply_particle_limits(const ParticleLimits& limits, const std::vector<Vec3>& v_old,
                                         Particles& p, std::vector<DeletedParticle>& deleted) {
   std::vector<char> keep(p.size(), 1);
-  for (std::size_t i = 0; i < p.size(); ++i) {
+  // Threaded screen with the loop's own tests: almost always no particle is
+  // touched, and the serial loop below (strings, a square root per particle)
+  // was a part of the step that did not scale with threads.
+  const long np = long(p.size());
+  long first = np;  // the lowest particle the loop below acts on
+#pragma omp parallel for schedule(static) reduction(min : first) if (np >= 4096)
+  for (long i = 0; i < np; ++i)
+    if (p.mass[i] <= limits.minimum_mass || p.temperature[i] < 0.0 || p.v[i].norm() > limits.maximum_speed)
+      first = std::min(first, i);
+  for (std::size_t i = std::size_t(first); i < p.size(); ++i) {
     std::string reason;
     if (p.mass[i] <= limits.minimum_mass) {
       std::ostringstream s;

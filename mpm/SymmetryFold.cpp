@@ -59,7 +59,9 @@ void fold_symmetry_particle_sums(const GridBoundaryConditions& bcs, NodeGrid& g)
   for (int f = 0; f < 6; ++f) any = any || active(bcs, g, f);
   if (!any) return;
   const bool stress = !g.stress.empty();  // NodeGrid::node_stress
-  for (std::size_t n = 0; n < g.count(); ++n) {  // extensive sums
+  const long nodes = long(g.count());  // node-wise loops, threaded: the same bits for any thread count
+#pragma omp parallel for schedule(static) if (nodes >= 4096)
+  for (long n = 0; n < nodes; ++n) {  // extensive sums
     g.velocity[n] *= g.mass[n];
     if (stress) g.stress[n] *= g.volume[n];
   }
@@ -71,7 +73,8 @@ void fold_symmetry_particle_sums(const GridBoundaryConditions& bcs, NodeGrid& g)
     if (stress) fold_field(g, f, g.stress);
     fold_field(g, f, g.external_force);
   }
-  for (std::size_t n = 0; n < g.count(); ++n) {
+#pragma omp parallel for schedule(static) if (nodes >= 4096)
+  for (long n = 0; n < nodes; ++n) {
     if (g.mass[n] > 0.0) g.velocity[n] /= g.mass[n];
     if (stress && g.volume[n] > 0.0) g.stress[n] /= g.volume[n];
   }
@@ -87,10 +90,13 @@ void fold_symmetry_velocity(const GridBoundaryConditions& bcs, const NodeGrid& g
   for (int f = 0; f < 6; ++f) any = any || active(bcs, g, f);
   if (!any) return;
   // velocity = P / m_folded with P the unfolded momentum sum: P = velocity m_folded.
-  for (std::size_t n = 0; n < g.count(); ++n) velocity[n] *= g.mass[n];
+  const long nodes = long(g.count());  // node-wise loops, threaded: the same bits for any thread count
+#pragma omp parallel for schedule(static) if (nodes >= 4096)
+  for (long n = 0; n < nodes; ++n) velocity[n] *= g.mass[n];
   for (int f = 0; f < 6; ++f)
     if (active(bcs, g, f)) fold_field(g, f, velocity);
-  for (std::size_t n = 0; n < g.count(); ++n) velocity[n] = g.mass[n] > 0.0 ? Vec3(velocity[n] / g.mass[n]) : Vec3::Zero();
+#pragma omp parallel for schedule(static) if (nodes >= 4096)
+  for (long n = 0; n < nodes; ++n) velocity[n] = g.mass[n] > 0.0 ? Vec3(velocity[n] / g.mass[n]) : Vec3::Zero();
 }
 
 }  // namespace tephra

@@ -108,6 +108,22 @@ void velocity_gradients(const Stencils& s, const NodeGrid& g, std::vector<Mat3>&
   });
 }
 
+void velocity_gradients_and_first_order_F(const Stencils& s, const NodeGrid& g, double dt, std::vector<Mat3>& L,
+                                          const std::vector<Mat3>& F_old, std::vector<Mat3>& F) {
+  const std::size_t np = s.particles();
+  L.resize(np);
+  F.resize(F_old.size());
+  const Vec3* vstar = g.velocity_star.data();
+  visit_stencils(s, [&](const auto& view) {
+#pragma omp parallel for schedule(static) if (np >= kMinParallel)
+    for (std::size_t i = 0; i < np; ++i) {
+      const Mat3 l = particle_velocity_gradient(view, i, vstar);
+      L[i] = l;
+      F[i] = (Mat3::Identity() + dt * l) * F_old[i];  // as update_deformation_gradients (FirstOrder)
+    }
+  });
+}
+
 void grid_to_particles(const Stencils& s, const NodeGrid& g, double dt, Particles& p) {
   const std::size_t np = s.particles();
   const Vec3* acc = g.acceleration.data();

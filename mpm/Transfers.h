@@ -32,6 +32,12 @@ void acceleration_from_velocities(NodeGrid& g, double dt);
 // l_p = sum_g v*_g (grad S_gp)^T   (Alg. 9, eq. 1.73).
 void velocity_gradients(const Stencils& s, const NodeGrid& g, std::vector<Mat3>& L);
 
+// velocity_gradients and the first-order update F_{n+1} = (I + dt l_p) F_n
+// (eq. 1.75, update_deformation_gradients with FirstOrder) in one pass over
+// the particles: the same expressions, so the same bits as the two calls.
+void velocity_gradients_and_first_order_F(const Stencils& s, const NodeGrid& g, double dt, std::vector<Mat3>& L,
+                                          const std::vector<Mat3>& F_old, std::vector<Mat3>& F);
+
 // G2P, FLIP update (Alg. 14, eq. 1.76):
 //   v_p += dt sum a_g S,  x_p += dt sum v*_g S,  u_p += dt sum v*_g S.
 void grid_to_particles(const Stencils& s, const NodeGrid& g, double dt, Particles& p);

@@ -36,7 +36,10 @@ namespace tephra {
 
 void keep_stable_usl_nodes(const NodeGrid& g, double limit, double cell_volume, const std::vector<Vec3>& v_star,
                            std::vector<Vec3>& v) {
-  for (std::size_t n = 0; n < v.size(); ++n)
+  const long nodes = long(v.size());
+  // Node by node, no sums: the same bits for any thread count.
+#pragma omp parallel for schedule(static) if (nodes >= 4096)
+  for (long n = 0; n < nodes; ++n)
     if (g.volume[n] >= limit * cell_volume) v[n] = v_star[n];
 }
 
@@ -46,30 +49,45 @@ namespace tephra {
 
 std::size_t usl_needed_nodes(const NodeGrid& g, double limit, double cell_volume, std::vector<unsigned char>& needed) {
   const std::size_t nodes = g.count();
-  needed.assign(nodes, 0);
+  needed.resize(nodes);
+  unsigned char* need = needed.data();
+  const long count = long(nodes);
   std::size_t weak = 0;
-  for (std::size_t n = 0; n < nodes; ++n)
-    if (!(g.volume[n] >= limit * cell_volume)) needed[n] = 1, ++weak;  // the negation of keep_stable_usl_nodes' test
+  // Every entry written (0 or 1): no separate zero fill. Threaded: a count is exact in any order.
+#pragma omp parallel for schedule(static) reduction(+ : weak) if (count >= 4096)
+  for (long n = 0; n < count; ++n) {
+    const bool w = !(g.volume[n] >= limit * cell_volume);  // the negation of keep_stable_usl_nodes' test
+    need[n] = w;
+    weak += w;
+  }
   if (weak == 0) return 0;
-  for (int k = 0; k < g.n[2]; ++k)
-    for (int j = 0; j < g.n[1]; ++j)
-      for (int i = 0; i < g.n[0]; ++i) {
-        const IntVec3 c(i, j, k);
-        bool layer = false;
-        for (int d = 0; d < 3; ++d) layer = layer || c[d] <= 2 * g.extra[d] || c[d] >= g.n[d] - 1 - 2 * g.extra[d];
-        if (layer) needed[g.index(c)] = 1;
-      }
+  // The node planes c_d <= 2 extra_d or c_d >= n_d - 1 - 2 extra_d of any
+  // direction d: whole rows of i where (j, k) is in a y or z layer, else the
+  // first and last 2 extra_x + 1 nodes of the row.
+  const int nx = g.n[0], ny = g.n[1], nz = g.n[2];
+  const int ex = 2 * g.extra[0], ey = 2 * g.extra[1], ez = 2 * g.extra[2];
+  const long rows = long(ny) * nz;
+#pragma omp parallel for schedule(static) if (count >= 4096)
+  for (long r = 0; r < rows; ++r) {
+    const int j = int(r % ny), k = int(r / ny);
+    unsigned char* row = need + g.index(0, j, k);
+    const bool layer = j <= ey || j >= ny - 1 - ey || k <= ez || k >= nz - 1 - ez;
+    for (int i = 0; i < nx; ++i)
+      if (layer || i <= ex || i >= nx - 1 - ex) row[i] = 1;
+  }
   return weak;
 }
 
 void updated_particle_grid_velocity_at(const Particles& p, const Stencils& s, const NodeGrid& g, double dt,
                                        const std::vector<unsigned char>& needed, std::vector<Vec3>& out) {
   const std::size_t nodes = g.mass.size();
-  out.assign(nodes, Vec3::Zero());
+  out.resize(nodes);
+  Vec3* o = out.data();
+#pragma omp parallel for schedule(static) if (nodes >= 4096)
+  for (std::size_t n = 0; n < nodes; ++n) o[n].setZero();  // threaded zero fill (same bits)
   if (std::find(needed.begin(), needed.end(), 1) == needed.end()) return;
   // The scatter order of P2G (ScatterOrder.h), threaded; the particles whose
   // stencil reaches no needed node are skipped.
-  Vec3* o = out.data();
   const Vec3* acc = g.acceleration.data();
   const unsigned char* need = needed.data();
   visit_stencils(s, [&](const auto& view) {

@@ -159,7 +159,7 @@ long fill(const Particles& p, const NodeGrid& g, const InterpolatorSpec& spec, S
 // The per-axis form of particle i (Interpolator.h); false when its support
 // leaves the grid. Same 1-D factors as fill_particle.
 template <InterpolatorKind K, int N>
-bool fill_axis_particle(const Particles& p, const NodeGrid& g, std::size_t i, Stencils& s) {
+bool fill_axis_particle(const Particles& p, const NodeGrid& g, const Vec3& inv_h, std::size_t i, Stencils& s) {
   Vec3 xi;
   for (int d = 0; d < 3; ++d) {
     xi[d] = (p.x[i][d] - g.origin[d]) / g.h[d];
@@ -177,7 +177,10 @@ bool fill_axis_particle(const Particles& p, const NodeGrid& g, std::size_t i, St
   for (int d = 0; d < 3; ++d)
     for (int a = 0; a < N; ++a) {
       f[d * N + a] = ax[d].S[a];
-      f[(3 + d) * N + a] = ax[d].dS[a] / g.h[d];
+      // Linear: dS/dxi = -1, +1 exactly (ShapeLinear.h), and -1/h = -(1/h) in
+      // IEEE arithmetic, so G = +-inv_h is the bits of dS / h without a division per entry.
+      if constexpr (K == InterpolatorKind::Linear) f[(3 + d) * N + a] = a == 0 ? -inv_h[d] : inv_h[d];
+      else f[(3 + d) * N + a] = ax[d].dS[a] / g.h[d];
     }
   return true;
 }
@@ -192,8 +195,9 @@ bool fill_axis(const Particles& p, const NodeGrid& g, Stencils& s) {
   s.base.resize(std::size_t(np));
   s.factors.resize(std::size_t(np) * 6 * N);
   bool ok = true;
+  const Vec3 inv_h(1.0 / g.h[0], 1.0 / g.h[1], 1.0 / g.h[2]);  // linear's G factors (fill_axis_particle)
 #pragma omp parallel for schedule(static) reduction(&& : ok) if (np >= 4096)
-  for (long i = 0; i < np; ++i) ok = fill_axis_particle<K, N>(p, g, std::size_t(i), s) && ok;
+  for (long i = 0; i < np; ++i) ok = fill_axis_particle<K, N>(p, g, inv_h, std::size_t(i), s) && ok;
   return ok;
 }
 

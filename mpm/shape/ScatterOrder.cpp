@@ -2,6 +2,10 @@
 
 #include <algorithm>
 
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
 namespace tephra {
 
 void ScatterOrder::prepare(std::size_t np, int ny, int nz, int span_y, int span_z) {
@@ -14,21 +18,59 @@ void ScatterOrder::prepare(std::size_t np, int ny, int nz, int span_y, int span_
   particles = 0;
 }
 
+// Stable counting sort of the keys, split among T threads (T = 1 below 4096
+// particles). Thread t owns the contiguous index range [np t / T, np (t+1) / T).
+// 1. Each thread counts the keys of its range: count[t][k].
+// 2. Exclusive prefix sum in (key, thread) order:
+//      first[t][k] = sum_{k' < k} sum_t' count[t'][k'] + sum_{t' < t} count[t'][k],
+//    so key k's slots hold thread 0's particles, then thread 1's, ...
+// 3. Each thread places its range in ascending index from first[t][k].
+// Inside a key the particles of a lower thread have lower indices, so every
+// key lists its particles in ascending index: the result is the serial
+// stable sort, the same for any T (tested in test_mpm_scatter_order).
 void ScatterOrder::finish() {
   const std::size_t np = key.size();
   const std::size_t keys = std::size_t(4) * blocks_y * blocks_z;
-  // Counting sort: count per key, prefix sums, then place the particles in
-  // ascending index (stable).
-  std::vector<std::uint32_t> start(keys + 1, 0);
-  for (std::size_t i = 0; i < np; ++i) ++start[key[i] + 1];
-  for (std::size_t k = 0; k < keys; ++k) start[k + 1] += start[k];
+  int T = 1;
+#ifdef _OPENMP
+  if (np >= 4096) T = std::max(1, omp_get_max_threads());
+#endif
+  // count[t * (keys + 1) + k + 1] for thread t; becomes the slot start of (t, k).
+  std::vector<std::uint32_t> count(std::size_t(T) * (keys + 1), 0);
+  std::vector<std::uint32_t> start(keys + 1, 0);  // start[k]: first slot of key k (all threads)
   index.resize(np);
+  std::size_t moved = 0;
+#pragma omp parallel num_threads(T) reduction(+ : moved)
   {
-    std::vector<std::uint32_t> next(start.begin(), start.end() - 1);
-    for (std::size_t i = 0; i < np; ++i) index[next[key[i]]++] = std::uint32_t(i);
+    int t = 0;
+#ifdef _OPENMP
+    t = omp_get_thread_num();
+#endif
+    const std::size_t lo = np * std::size_t(t) / std::size_t(T), hi = np * std::size_t(t + 1) / std::size_t(T);
+    std::uint32_t* c = count.data() + std::size_t(t) * (keys + 1);
+    for (std::size_t i = lo; i < hi; ++i) ++c[key[i] + 1];
+#pragma omp barrier
+#pragma omp single
+    {
+      // Serial over keys x threads (a few thousand entries): key-major, thread-minor prefix sum.
+      std::uint32_t run = 0;
+      for (std::size_t k = 0; k < keys; ++k) {
+        start[k] = run;
+        for (int u = 0; u < T; ++u) {
+          std::uint32_t& slot = count[std::size_t(u) * (keys + 1) + k + 1];
+          const std::uint32_t n = slot;
+          slot = run;  // first slot of thread u's particles of key k
+          run += n;
+        }
+      }
+      start[keys] = run;
+    }  // implicit barrier
+    for (std::size_t i = lo; i < hi; ++i) index[c[key[i] + 1]++] = std::uint32_t(i);
+#pragma omp barrier
+#pragma omp for schedule(static)
+    for (long j = 0; j < long(np); ++j) moved += index[std::size_t(j)] != std::uint32_t(j);
   }
-  displaced = 0;
-  for (std::size_t j = 0; j < np; ++j) displaced += index[j] != j;
+  displaced = moved;
   // The non-empty blocks, colour-major (the key numbering is colour-major).
   const std::size_t per_colour = std::size_t(blocks_y) * blocks_z;
   block.clear();

@@ -1,0 +1,192 @@
+// The serial set-up parts of P2G and the deformation-gradient phase, threaded
+// in session 13 (docs/performance.md), against reference loops written here:
+//   * ScatterOrder::finish (per-thread counting sort + prefix sums) equals the
+//     stable sort of the particle indices by key (std::stable_sort), with the
+//     same blocks, colours and `displaced` count, for 1, 2 and 3 threads;
+//   * usl_needed_nodes marks exactly the nodes with V_g < limit V_cell or on a
+//     node plane within 2 extra of a face (the definition in
+//     UpdatedGridVelocity.h, evaluated node by node here) and returns the
+//     under-filled count, for 1, 2 and 3 threads;
+//   * NodeGrid::reset zeroes every array, sized to count(), for 1 and 2 threads;
+//   * velocity_gradients_and_first_order_F (one pass) gives the bits of
+//     velocity_gradients + update_deformation_gradients(FirstOrder), for the
+//     flat and per-axis (linear, gimp) stencils, with 1 and 2 threads.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <numeric>
+#include <random>
+
+#include "core/grid/Loop.h"
+#include "mpm/DeformationGradient.h"
+#include "mpm/NodeGrid.h"
+#include "mpm/Transfers.h"
+#include "mpm/UpdatedGridVelocity.h"
+#include "mpm/shape/ScatterOrder.h"
+
+namespace tephra {
+namespace {
+
+struct Threads {
+  int saved = thread_count();
+  explicit Threads(int n) { set_thread_count(n); }
+  ~Threads() { set_thread_count(saved); }
+};
+
+TEST(MpmThreadedSetup, ScatterOrderFinishIsTheStableSort) {
+  const int ny = 23, nz = 19;
+  const std::size_t np = 20011;  // > 4096: the threaded path
+  std::mt19937 rng(11);
+  std::uniform_int_distribution<int> y(0, ny - 3), z(0, nz - 3);
+  std::vector<int> y0(np), z0(np);
+  for (std::size_t i = 0; i < np; ++i) y0[i] = y(rng), z0[i] = z(rng);
+  // A run of particles already in block order at the start (some not displaced).
+  for (int span : {2, 3}) {
+    SCOPED_TRACE(span);
+    ScatterOrder ref_keys;
+    ref_keys.prepare(np, ny, nz, span, span);
+    std::vector<std::uint32_t> key(np);
+    for (std::size_t i = 0; i < np; ++i) key[i] = ref_keys.block_key(y0[i], z0[i]);
+    // Reference: indices stably sorted by key; blocks = the starts of the non-empty keys.
+    std::vector<std::uint32_t> ref(np);
+    std::iota(ref.begin(), ref.end(), 0u);
+    std::stable_sort(ref.begin(), ref.end(), [&](std::uint32_t a, std::uint32_t b) { return key[a] < key[b]; });
+    std::size_t ref_displaced = 0;
+    for (std::size_t j = 0; j < np; ++j) ref_displaced += ref[j] != j;
+    std::vector<std::uint32_t> ref_block;
+    for (std::size_t j = 0; j < np; ++j)
+      if (j == 0 || key[ref[j]] != key[ref[j - 1]]) ref_block.push_back(std::uint32_t(j));
+    ref_block.push_back(std::uint32_t(np));
+    for (int threads : {1, 2, 3}) {
+      SCOPED_TRACE(threads);
+      Threads t(threads);
+      ScatterOrder o;
+      o.prepare(np, ny, nz, span, span);
+      o.key = key;
+      o.finish();
+      ASSERT_TRUE(o.built_for(np));
+      EXPECT_EQ(o.index, ref);
+      EXPECT_EQ(o.block, ref_block);
+      EXPECT_EQ(o.displaced, ref_displaced);
+      // Colour c's blocks: the blocks whose key's colour (key / (blocks_y blocks_z)) is c.
+      const std::uint32_t per_colour = std::uint32_t(o.blocks_y * o.blocks_z);
+      for (int c = 0; c < 4; ++c)
+        for (std::uint32_t b = o.colour[c]; b < o.colour[c + 1]; ++b)
+          EXPECT_EQ(key[o.index[o.block[b]]] / per_colour, std::uint32_t(c));
+      EXPECT_EQ(o.colour[4] + 1, o.block.size());
+    }
+  }
+}
+
+TEST(MpmThreadedSetup, UslNeededNodesIsTheDefinition) {
+  NodeGrid g;
+  g.h = Vec3(0.1, 0.2, 0.3);
+  g.n = IntVec3(21, 17, 15);  // 5355 nodes > 4096: the threaded path
+  g.extra = IntVec3(1, 2, 1);
+  g.reset();
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  const double cell_volume = g.h.prod();
+  for (double& v : g.volume) v = u(rng) < 0.3 ? 0.0 : cell_volume * 1.2 * u(rng);
+  for (double limit : {0.0, 0.4}) {
+    SCOPED_TRACE(limit);
+    // The definition, node by node.
+    std::vector<unsigned char> ref(g.count(), 0);
+    std::size_t ref_weak = 0;
+    for (int k = 0; k < g.n[2]; ++k)
+      for (int j = 0; j < g.n[1]; ++j)
+        for (int i = 0; i < g.n[0]; ++i) {
+          const IntVec3 c(i, j, k);
+          const std::size_t n = g.index(c);
+          const bool weak = !(g.volume[n] >= limit * cell_volume);
+          ref_weak += weak;
+          bool layer = false;
+          for (int d = 0; d < 3; ++d) layer = layer || c[d] <= 2 * g.extra[d] || c[d] >= g.n[d] - 1 - 2 * g.extra[d];
+          ref[n] = weak || layer;
+        }
+    if (ref_weak == 0) std::fill(ref.begin(), ref.end(), 0);  // nothing needed: USL everywhere
+    for (int threads : {1, 2, 3}) {
+      SCOPED_TRACE(threads);
+      Threads t(threads);
+      std::vector<unsigned char> needed(3, 7);  // stale content must not survive
+      EXPECT_EQ(usl_needed_nodes(g, limit, cell_volume, needed), ref_weak);
+      EXPECT_EQ(needed, ref);
+    }
+  }
+}
+
+TEST(MpmThreadedSetup, ResetZeroesEveryArray) {
+  for (int threads : {1, 2}) {
+    Threads t(threads);
+    NodeGrid g;
+    g.n = IntVec3(20, 18, 16);
+    g.reset();
+    for (double& v : g.mass) v = 1.5;
+    for (Vec3& v : g.velocity) v = Vec3(1, 2, 3);
+    for (Vec3& v : g.internal_force) v = Vec3(-1, 2, 3);
+    for (Mat3& s : g.stress) s = Mat3::Ones();
+    g.reset();
+    const std::size_t n = g.count();
+    ASSERT_EQ(g.mass.size(), n);
+    ASSERT_EQ(g.stress.size(), n);
+    for (std::size_t i = 0; i < n; ++i) {
+      EXPECT_EQ(g.mass[i], 0.0);
+      EXPECT_EQ(g.volume[i], 0.0);
+      EXPECT_EQ(g.velocity[i], Vec3::Zero());
+      EXPECT_EQ(g.velocity_star[i], Vec3::Zero());
+      EXPECT_EQ(g.acceleration[i], Vec3::Zero());
+      EXPECT_EQ(g.external_force[i], Vec3::Zero());
+      EXPECT_EQ(g.internal_force[i], Vec3::Zero());
+      EXPECT_EQ(g.stress[i], Mat3::Zero());
+    }
+    g.node_stress = false;
+    g.reset();
+    EXPECT_TRUE(g.stress.empty());
+    g.n = IntVec3(3, 3, 3);  // shrinking
+    g.reset();
+    EXPECT_EQ(g.velocity.size(), 27u);
+  }
+}
+
+TEST(MpmThreadedSetup, FusedVelocityGradientAndFIsTheTwoPasses) {
+  NodeGrid g;
+  g.origin = Vec3(-1.0, 0.5, 0.0);
+  g.h = Vec3(0.1, 0.2, 0.15);
+  g.n = IntVec3(14, 16, 18);
+  g.reset();
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> u(0.0, 1.0), s(-1.0, 1.0);
+  for (Vec3& v : g.velocity_star) v = Vec3(s(rng), s(rng), s(rng));
+  Particles p;
+  std::vector<Mat3> F_old;
+  for (int i = 0; i < 5000; ++i) {
+    const Vec3 x = g.origin + Vec3((2 + 9 * u(rng)) * g.h[0], (2 + 11 * u(rng)) * g.h[1], (2 + 13 * u(rng)) * g.h[2]);
+    p.add(x, Vec3::Zero(), 1.0, 1e-3, 300.0, 0.0, i, Mat3::Identity() * 0.5);
+    F_old.push_back(Mat3::Identity() + 0.1 * Mat3::Random());
+  }
+  const double dt = 0.01;
+  for (int form = 0; form < 3; ++form) {
+    SCOPED_TRACE(form);
+    Stencils st;
+    if (form == 0) ASSERT_EQ(compute_stencils(p, g, {InterpolatorKind::Gimp, 1e10}, st), -1);
+    if (form == 1) ASSERT_TRUE(compute_axis_stencils(p, g, {InterpolatorKind::Linear, 1e10}, st));
+    if (form == 2) ASSERT_TRUE(compute_axis_stencils(p, g, {InterpolatorKind::Gimp, 1e10}, st));
+    std::vector<Mat3> L_ref, F_ref;
+    velocity_gradients(st, g, L_ref);
+    update_deformation_gradients(DeformationGradientAlgorithm::FirstOrder, 1, dt, L_ref, F_old, F_ref);
+    for (int threads : {1, 2}) {
+      Threads t(threads);
+      std::vector<Mat3> L, F;
+      velocity_gradients_and_first_order_F(st, g, dt, L, F_old, F);
+      ASSERT_EQ(L.size(), L_ref.size());
+      ASSERT_EQ(F.size(), F_ref.size());
+      for (std::size_t i = 0; i < L.size(); ++i) {
+        ASSERT_EQ(L[i], L_ref[i]) << i;
+        ASSERT_EQ(F[i], F_ref[i]) << i;
+      }
+    }
+  }
+}
+
+}  // namespace
+}  // namespace tephra
