@@ -1,4 +1,5 @@
 // MpmComponent: the end-of-step particle limits and deletion (mpm/ParticleDeletion.h).
+#include <algorithm>
 #include <sstream>
 
 #include "core/base/Log.h"
@@ -34,7 +35,13 @@ void MpmComponent::delete_particles(MpmMaterial& m, const std::vector<Vec3>& v_o
 // the step. Without the check the deletion above removes such particles.
 void MpmComponent::check_temperatures(const MpmMaterial& m, int step) const {
   const std::vector<double>& T = m.particles.temperature;
-  for (std::size_t i = 0; i < T.size(); ++i)
+  // Threaded screen for the lowest failing particle (a minimum: order-free), then its message.
+  const long np = long(T.size());
+  long first = np;
+#pragma omp parallel for schedule(static) reduction(min : first) if (np >= 4096)
+  for (long i = 0; i < np; ++i)
+    if (!(T[i] >= 0.0)) first = std::min(first, i);
+  for (std::size_t i = std::size_t(first); i < T.size(); ++i)
     if (!(T[i] >= 0.0)) {
       std::ostringstream s;
       s.precision(17);

@@ -51,9 +51,13 @@ void MpmComponent::compute_heat_rates(double dt) {
   double lo = std::numeric_limits<double>::infinity(), hi = -lo;
   const bool faces = setup_.flags.explicit_heat_conduction;  // Dirichlet faces act with conduction on
   for (const MpmMaterial& m : setup_.materials) {
-    for (double T : m.particles.temperature) {
-      lo = std::min(lo, T);
-      hi = std::max(hi, T);
+    const std::vector<double>& Tp = m.particles.temperature;
+    const long np = long(Tp.size());
+    // min / max are exact in any order: the same result for any thread count.
+#pragma omp parallel for schedule(static) reduction(min : lo) reduction(max : hi) if (np >= 4096)
+    for (long i = 0; i < np; ++i) {
+      lo = std::min(lo, Tp[i]);
+      hi = std::max(hi, Tp[i]);
     }
     if (faces)
       for (const auto& T : m.bcs.temperature)
@@ -109,8 +113,9 @@ void MpmComponent::compute_heat_rates(double dt) {
 void MpmComponent::update_temperatures(MpmMaterial& m, double dt) {
   Particles& p = m.particles;
   if (conducting_) temperature_rate_to_particles(m.stencils, m.thermal, dt, p);
-  const std::size_t n = std::min(p.size(), m.heating.size());
-  for (std::size_t i = 0; i < n; ++i) p.temperature[i] += dt * m.heating[i];
+  const long n = long(std::min(p.size(), m.heating.size()));
+#pragma omp parallel for schedule(static) if (n >= 4096)
+  for (long i = 0; i < n; ++i) p.temperature[i] += dt * m.heating[i];
 }
 
 }  // namespace tephra
