@@ -5,7 +5,7 @@ ICE/JWLpp8mmRS.ups (JWL++ rate, Murnaghan reactant, JWLC products, air).
 Usage:
   tests/bench/rate_stick_size_effect.py BUILD_DIR run  R_MM DX_MM [OUT_ROOT]
   tests/bench/rate_stick_size_effect.py BUILD_DIR front R_MM DX_MM [OUT_ROOT]
-  tests/bench/rate_stick_size_effect.py BUILD_DIR plot  RESULTS.csv PNG
+  tests/bench/rate_stick_size_effect.py BUILD_DIR plot  RESULTS.csv PNG   (pure Python PNG)
 
 R_MM = 0 is the "infinite-diameter" stick the manual describes: one cell
 across, the y+ and z+ faces made symmetry planes, the whole cross-section
@@ -114,30 +114,84 @@ def main():
     print(f"R = {r_mm:g} mm, dx = {dx_mm:g} mm: D(10 us..) = {d10:.0f} m/s, D(14 us..) = {d14:.0f} m/s")
 
 
-def plot(results, png):
-    """RESULTS.csv: R_mm,dx_mm,D (R_mm = 0: infinite)."""
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-    rows = [r for r in csv.DictReader(open(results))]
-    fig, ax = plt.subplots(figsize=(6.4, 4.4))
+REFERENCE = {
     # Guilkey, Harman & Banerjee (2007) ICE simulations and Souers et al. ANFO
     # experiments, as quoted in issue 6 (Vaango theory manual 26.3.1).
-    ax.plot([0, 0.05, 0.08, 0.125, 0.1667], [5760, 5404, 4906, 4624, 4087], "s--", color="gray",
-            label="Guilkey et al. 2007 (simulation)")
-    ax.plot([0.0, 0.09, 0.09, 0.154], [5890, 4533, 4742, 3672], "k^", label="Souers et al. (experiment)")
-    for dx in sorted({float(r["dx_mm"]) for r in rows}):
+    "guilkey2007": [(0, 5760), (0.05, 5404), (0.08, 4906), (0.125, 4624), (0.1667, 4087)],
+    "souers": [(0.0, 5890), (0.09, 4533), (0.09, 4742), (0.154, 3672)],
+}
+D_CJ = 5899.3  # jwlc_cj.py on JWLEOSANFO.xml
+
+
+def write_png(path, w, h, px):
+    """8-bit RGB PNG (PNG spec: signature, IHDR, one zlib IDAT, IEND)."""
+    import struct
+    import zlib
+    raw = b"".join(b"\x00" + bytes(px[y * w * 3:(y + 1) * w * 3]) for y in range(h))
+    chunk = lambda t, d: struct.pack(">I", len(d)) + t + d + struct.pack(">I", zlib.crc32(t + d) & 0xFFFFFFFF)
+    data = (b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", w, h, 8, 2, 0, 0, 0))
+            + chunk(b"IDAT", zlib.compress(raw, 9)) + chunk(b"IEND", b""))
+    open(path, "wb").write(data)
+
+
+def plot(results, png):
+    """RESULTS.csv: R_mm,dx_mm,D (R_mm = 0: infinite; D empty: no detonation).
+    Linear axes 1/R in [0, 0.25]/mm (ticks every 0.05) and D in [2000, 6500] m/s
+    (ticks every 500), no text (key in docs/validation/rate-stick-size-effect.md):
+    grey squares = Guilkey et al. 2007 simulation, black triangles = Souers
+    et al. experiments, red dotted line = D_CJ, blue = Tephra dx = 2 mm,
+    green = Tephra dx = 1 mm, orange = dx = 0.5 mm."""
+    W, H, L, R, T, B = 720, 480, 60, 20, 20, 50
+    px = bytearray([255] * (W * H * 3))
+    X = lambda x: L + x / 0.25 * (W - L - R)
+    Y = lambda d: H - B - (d - 2000) / 4500 * (H - T - B)
+
+    def dot(x, y, c):
+        if 0 <= x < W and 0 <= y < H:
+            i = (int(y) * W + int(x)) * 3
+            px[i:i + 3] = bytes(c)
+
+    def line(x0, y0, x1, y1, c, dotted=False):
+        n = int(max(abs(x1 - x0), abs(y1 - y0))) + 1
+        for k in range(n + 1):
+            if dotted and (k // 4) % 2:
+                continue
+            for o in (-1, 0, 1) if not dotted else (0,):
+                dot(x0 + (x1 - x0) * k / n, y0 + (y1 - y0) * k / n + o, c)
+
+    def marker(x, y, c, kind):
+        for a in range(-4, 5):
+            for b in range(-4, 5):
+                if kind == "o" and a * a + b * b <= 16 or kind == "s" or kind == "^" and b >= 2 * abs(a) - 4:
+                    dot(x + a, y + b, c)
+
+    grey, black = (140, 140, 140), (0, 0, 0)
+    for k in range(6):  # 1/R ticks and grid
+        line(X(0.05 * k), T, X(0.05 * k), H - B, (225, 225, 225), dotted=True)
+        line(X(0.05 * k), H - B, X(0.05 * k), H - B + 6, black)
+    for k in range(10):  # D ticks and grid
+        line(L, Y(2000 + 500 * k), W - R, Y(2000 + 500 * k), (225, 225, 225), dotted=True)
+        line(L - 6, Y(2000 + 500 * k), L, Y(2000 + 500 * k), black)
+    line(L, H - B, W - R, H - B, black)
+    line(L, T, L, H - B, black)
+    line(X(0), Y(D_CJ), X(0.25), Y(D_CJ), (200, 0, 0), dotted=True)
+    ref = REFERENCE["guilkey2007"]
+    for (a, d), (b, e) in zip(ref, ref[1:]):
+        line(X(a), Y(d), X(b), Y(e), grey, dotted=True)
+    for a, d in ref:
+        marker(X(a), Y(d), grey, "s")
+    for a, d in REFERENCE["souers"]:
+        marker(X(a), Y(d), black, "^")
+    colours = {2.0: (30, 90, 220), 1.0: (20, 160, 60), 0.5: (230, 130, 0)}
+    rows = [r for r in csv.DictReader(open(results)) if r["D"].strip()]
+    for dx, c in colours.items():
         pts = sorted((1 / float(r["R_mm"]) if float(r["R_mm"]) > 0 else 0.0, float(r["D"]))
                      for r in rows if float(r["dx_mm"]) == dx)
-        ax.plot(*zip(*pts), "o-", label=f"Tephra ICE, dx = {dx:g} mm")
-    ax.axhline(5899, color="C3", lw=0.8, ls=":", label="D_CJ of the JWLC products (5899 m/s)")
-    ax.set_xlabel("1/R (1/mm)")
-    ax.set_ylabel("detonation speed D (m/s)")
-    ax.set_title("ANFO rate stick (JWL++), size effect")
-    ax.legend(fontsize=8)
-    ax.grid(alpha=0.3)
-    fig.tight_layout()
-    fig.savefig(png, dpi=110)
+        for (a, d), (b, e) in zip(pts, pts[1:]):
+            line(X(a), Y(d), X(b), Y(e), c)
+        for a, d in pts:
+            marker(X(a), Y(d), c, "o")
+    write_png(png, W, H, px)
 
 
 if __name__ == "__main__":
