@@ -29,6 +29,31 @@ void apply_vector_bc(const Grid& g, const Patch& p, GridFace f, const IceFaceBc&
   });
 }
 
+void apply_hydrostatic_pressure_bc(const Grid& g, const Patch& p, GridFace f, const IceFaceBc& bc,
+                                   const Vec3& gravity, const std::vector<const GridArray<double>*>& rho_parts,
+                                   GridArray<double>& press) {
+  if (gravity == Vec3::Zero()) return;
+  auto rho = [&](const IntVec3& c) {
+    double s = 0;
+    for (const GridArray<double>* r : rho_parts) s += (*r)(c);
+    return s;
+  };
+  const int d = face_axis(f);
+  if (bc.kind == BCKind::Neumann || bc.kind == BCKind::Symmetry) {
+    const double g_n = face_is_upper(f) ? gravity[d] : -gravity[d];
+    if (g_n == 0.0) return;
+    const double dx = g.dx[d];
+    for_each_boundary_cell(g, p, f, [&](const IntVec3& e, const IntVec3& in) {
+      press(e) += g_n * dx * 0.5 * (rho(in) + rho(e));
+    });
+  } else if (bc.kind == BCKind::Dirichlet) {
+    const Vec3 x0 = g.cell_center(0, 0, 0);
+    for_each_boundary_cell(g, p, f, [&](const IntVec3& e, const IntVec3&) {
+      press(e) += rho(e) * gravity.dot(g.cell_center(e[0], e[1], e[2]) - x0);
+    });
+  }
+}
+
 void apply_face_velocity_bc(const Grid& g, const Patch& p, GridFace f, const IceFaceBc& bc, GridArray<double>& u) {
   if (bc.kind != BCKind::Dirichlet && bc.kind != BCKind::Symmetry) return;
   const int d = face_axis(f);

@@ -11,6 +11,8 @@
 #include "core/grid/Fields.h"
 #include "ice/IceSetup.h"
 
+#include <vector>
+
 namespace tephra {
 
 // Calls fn(extra_cell, inner_cell) for each extra cell of patch p on domain
@@ -46,6 +48,24 @@ void for_each_boundary_cell(const Grid& g, const Patch& p, GridFace f, Fn&& fn, 
 // caller's (it needs two other fields).
 void apply_scalar_bc(const Grid& g, const Patch& p, GridFace f, const IceFaceBc& bc, GridArray<double>& q);
 void apply_vector_bc(const Grid& g, const Patch& p, GridFace f, const IceFaceBc& bc, GridArray<Vec3>& v);
+// Hydrostatic adjustment of the pressure in the extra cells of face f, after
+// apply_scalar_bc, when gravity g is not zero (Uintah's BoundaryCond.cc
+// HydrostaticPressureAdjustment; Kashiwa's ICE: the face pressure on a
+// wall must carry the weight of the fluid). rho is the mixture density
+// sum_m rho_CC,m, the sum over `rho` (Uintah takes the micro density of the surrounding
+// material; the two agree for one material).
+//   Neumann and symmetry (a wall normal to g):
+//     p_e += g_n dx (rho_i + rho_e)/2,   g_n = g . n_outward,
+//   the discrete balance (p_R - p_L)/dx = g (rho_L + rho_R)/2 of the face
+//   velocity eq. 26.1 across the boundary face (Uintah adjusts Neumann
+//   faces only; a symmetry plane normal to g is no mirror plane, since g
+//   breaks the mirror symmetry, so Tephra treats it as the wall it is).
+//   Dirichlet (value = p at the centre x_0 of cell (0,0,0)):
+//     p_e += rho_e g . (x_e - x_0).
+// Other kinds (LODI) are left as they are.
+void apply_hydrostatic_pressure_bc(const Grid& g, const Patch& p, GridFace f, const IceFaceBc& bc,
+                                   const Vec3& gravity, const std::vector<const GridArray<double>*>& rho,
+                                   GridArray<double>& press);
 // The normal face velocity on the boundary face f (face array of axis(f)).
 void apply_face_velocity_bc(const Grid& g, const Patch& p, GridFace f, const IceFaceBc& bc, GridArray<double>& u);
 

@@ -134,6 +134,9 @@ class IceComponent final : public Component {
   // LODI faces (IceLodiBcs.cpp, ice/Lodi.h): the pressure, the Lagrangian
   // velocity/temperature and the new state of the LODI material.
   void lodi_pressure_bc(std::size_t pi, CellScalars& press);
+  // The Pressure BC of every face of patch pi on press (apply_scalar_bc, then
+  // the hydrostatic adjustment when gravity is on; LODI faces are the caller's).
+  void apply_pressure_bc(std::size_t pi, CellScalars& press);
   void lodi_lagrangian_bc(std::size_t m, std::size_t pi);
   void lodi_state_bc(std::size_t m, std::size_t pi);
   void check_state(int step, const char* phase) const;  // all ranks throw if one finds a bad cell

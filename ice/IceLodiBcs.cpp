@@ -1,4 +1,5 @@
-// LODI boundary conditions in the ICE step (ice/Lodi.h), at the places
+// The Pressure BC (with its hydrostatic adjustment) and the LODI boundary
+// conditions in the ICE step (ice/Lodi.h), at the places
 // Uintah's ICE sets them: the equilibration pressure and the updated
 // pressure (amplitudes from rho_CC, vel_CC of the step's start, the pressure
 // and the sound speed), the Lagrangian velocity and temperature after the
@@ -10,6 +11,18 @@
 #include "ice/IceComponent.h"
 
 namespace tephra {
+
+void IceComponent::apply_pressure_bc(std::size_t pi, CellScalars& press) {
+  const Grid& g = setup_.grid;
+  std::vector<const GridArray<double>*> rho;
+  for (const IceMaterialFields& f : mats_) rho.push_back(&f.rho_CC[pi]);
+  for (int face = 0; face < 6; ++face) {
+    const GridFace gf = static_cast<GridFace>(face);
+    const IceFaceBc& bc = setup_.bcs[0][face][kBcPressure];
+    apply_scalar_bc(g, g.patches[pi], gf, bc, press[pi]);
+    apply_hydrostatic_pressure_bc(g, g.patches[pi], gf, bc, setup_.gravity, rho, press[pi]);
+  }
+}
 
 void IceComponent::lodi_pressure_bc(std::size_t pi, CellScalars& press) {
   const Grid& g = setup_.grid;

@@ -78,9 +78,7 @@ void IceComponent::compute_equilibration_pressure(int step) {
          << box.lo[2] + kr << ")";
       throw NumericalFailure(os.str());
     }
-    for (int face = 0; face < 6; ++face)
-      apply_scalar_bc(g, g.patches[pi], static_cast<GridFace>(face), setup_.bcs[0][face][kBcPressure],
-                      press_equil_CC_[pi]);
+    apply_pressure_bc(pi, press_equil_CC_);
     if (setup_.lodi.enabled) lodi_pressure_bc(pi, press_equil_CC_);
   }
   halo_->exchange(press_equil_CC_);
@@ -215,8 +213,7 @@ void IceComponent::compute_delP_and_pressure(double dt) {
         }
       }
     });
-    for (int face = 0; face < 6; ++face)
-      apply_scalar_bc(g, g.patches[pi], static_cast<GridFace>(face), setup_.bcs[0][face][kBcPressure], press_CC_[pi]);
+    apply_pressure_bc(pi, press_CC_);
     if (setup_.lodi.enabled) lodi_pressure_bc(pi, press_CC_);
   }
   halo_->exchange(press_CC_);

@@ -174,8 +174,7 @@ void IceComponent::implicit_pressure_solve(double dt, int step) {
     }
     for (std::size_t pi = 0; pi < g.patches.size(); ++pi) {
       for_each_cell(g.patches[pi].cells(), [&](int i, int j, int k) { press_CC_[pi](i, j, k) += delta_p_[pi](i, j, k); });
-      for (int face = 0; face < 6; ++face)
-        apply_scalar_bc(g, g.patches[pi], static_cast<GridFace>(face), setup_.bcs[0][face][kBcPressure], press_CC_[pi]);
+      apply_pressure_bc(pi, press_CC_);
     }
     halo_->exchange(press_CC_);
   }

@@ -143,7 +143,7 @@ TEST(IceReactions, LightTimeFrontAtDtAndPeakPressureTowardsCJ) {
 }
 
 // A 1-D JWL++ detonation in ANFO (Murnaghan reactant and JWLC products from
-// the EOSData files, the rate constants of ICE/JWLpp8mmRS.ups), 0.25 mm cells,
+// the EOSData files, the rate constants of ICE/JWLpp8mmRS.ups),
 // 1 cell across, initiated by a 2 mm booster of products at the CJ density
 // against the symmetry plane x = 0 (at T = 300 K + E0/c_v, the temperature of
 // burned products: the JWLC products' pressure does not depend on T, and a
@@ -201,12 +201,14 @@ std::string anfo_deck(double length, int cells, double rho_booster) {
   return s.str();
 }
 
-TEST(IceReactions, JwlppAnfoDetonationRunsAtTheChapmanJouguetSpeed) {
-  set_thread_count(1);
-  const double length = 0.12, t_end = 20e-6;
-  const int cells = 240;  // 0.5 mm
-  const Jwlc anfo{2.9867e11, 4.11706e9, 7.206147e8, 4.95, 1.15, 0.35, 1160.0};
-  const CjState cj = chapman_jouguet(anfo, 101325.0);
+struct AnfoFront {
+  double speed = 0, peak = 0;
+};
+
+// Runs the 1-D stick of `cells` cells over `length` to t_end (or until the
+// front is 5 mm from the outflow face) and returns the front speed (least
+// squares over the second half of the per-step samples) and the peak pressure.
+AnfoFront anfo_front(double length, int cells, double t_end, const Jwlc& anfo, const CjState& cj) {
   test::IceRun r;
   r.deck = load_deck_from_string(anfo_deck(length, cells, anfo.rho0 / cj.V), "anfo1d.ups", ".");
   // The include carries the same constants the test derives D_CJ from.
@@ -217,7 +219,7 @@ TEST(IceReactions, JwlppAnfoDetonationRunsAtTheChapmanJouguetSpeed) {
   r.ice->initialize();
   const Grid& g = r.ice->grid();
   std::vector<double> ts, xs;
-  double peak = 0;
+  AnfoFront out;
   while (r.time < t_end) {
     const double dt = r.steps == 0 ? 1e-9 : std::min(r.ice->stable_timestep(), 1e-6);
     r.ice->advance(r.time, dt, ++r.steps);
@@ -228,7 +230,7 @@ TEST(IceReactions, JwlppAnfoDetonationRunsAtTheChapmanJouguetSpeed) {
       for_each_cell_serial(g.patches[pi].cells(), [&](int i, int j, int k) {
         const double rr = r.ice->fields()[0].rho_CC[pi](i, j, k), rp = r.ice->fields()[1].rho_CC[pi](i, j, k);
         if (rp / (rr + rp) >= 0.5) front = std::max(front, cell_x(g, i));
-        peak = std::max(peak, r.ice->press_CC()[pi](i, j, k));
+        out.peak = std::max(out.peak, r.ice->press_CC()[pi](i, j, k));
       });
     if (front > length - 5e-3) break;  // stop before the outflow face
     ts.push_back(r.time);
@@ -244,11 +246,36 @@ TEST(IceReactions, JwlppAnfoDetonationRunsAtTheChapmanJouguetSpeed) {
     stt += ts[i] * ts[i];
     stx += ts[i] * xs[i];
   }
-  const double speed = (n * stx - st * sx) / (n * stt - st * st);
-  std::printf("JWL++ ANFO 1-D: %d steps, t = %.3g s, front %.4f m; speed %.1f m/s vs D_CJ %.1f m/s (%.2f %%); "
-              "peak p %.3g GPa vs p_CJ %.3g GPa\n",
-              r.steps, r.time, xs.back(), speed, cj.D, 100 * (speed / cj.D - 1), peak / 1e9, cj.p / 1e9);
-  EXPECT_NEAR(speed / cj.D, 1.0, 0.03);
+  out.speed = (n * stx - st * sx) / (n * stt - st * st);
+  std::printf("JWL++ ANFO 1-D, dx = %.3g mm: %d steps, t = %.3g s, front %.4f m; speed %.1f m/s vs D_CJ %.1f m/s "
+              "(%.2f %%); peak p %.3g GPa vs p_CJ %.3g GPa\n",
+              1e3 * length / cells, r.steps, r.time, xs.back(), out.speed, cj.D, 100 * (out.speed / cj.D - 1),
+              out.peak / 1e9, cj.p / 1e9);
+  return out;
+}
+
+// The steady speed converges to D_CJ with the cell size: 1, 0.5 and 0.25 mm
+// cells (the JWL++ reaction zone of ANFO is a few mm long, so 1 mm cells
+// hold about 2 cells of it). The deficit 1 - D/D_CJ must fall at each
+// halving and be within 3 % at 0.5 mm and 2 % at 0.25 mm (the 3 %).
+// Measured: 5704.5, 5789.2, 5811.9 m/s = -3.30, -1.87, -1.48 % (observed
+// orders 0.82, 0.33: what is left at 0.25 mm is mostly the front still
+// accelerating over the 12 cm run, not dx); 13.7 s CPU for the three runs.
+TEST(IceReactions, JwlppAnfoDetonationRunsAtTheChapmanJouguetSpeed) {
+  set_thread_count(1);
+  const Jwlc anfo{2.9867e11, 4.11706e9, 7.206147e8, 4.95, 1.15, 0.35, 1160.0};
+  const CjState cj = chapman_jouguet(anfo, 101325.0);
+  const double length = 0.12, t_end = 20e-6;
+  double deficit[3];
+  const int cells[3] = {120, 240, 480};
+  for (int i = 0; i < 3; ++i) deficit[i] = 1 - anfo_front(length, cells[i], t_end, anfo, cj).speed / cj.D;
+  for (int i = 1; i < 3; ++i)
+    std::printf("deficit %.4f -> %.4f: observed order %.2f\n", deficit[i - 1], deficit[i],
+                std::log2(deficit[i - 1] / deficit[i]));
+  EXPECT_GT(deficit[0], deficit[1]);
+  EXPECT_GT(deficit[1], deficit[2]);
+  EXPECT_LT(std::abs(deficit[1]), 0.03);
+  EXPECT_LT(std::abs(deficit[2]), 0.02);
 }
 
 }  // namespace
