@@ -520,7 +520,7 @@ TEST(MetalDecks, A5FreeFlightStaysAtRoundOff) {
 //    created) and below 4.5 % at the end (study: 4.04 %). It is NOT within 2 %: the
 //    rigid wall stops the node layer y = 0 every step (an inelastic capture of that
 //    layer's momentum: 2.8 % of KE0 in the first 2 us at h = 1 mm, then slower); it falls
-//    with h (taylor-impact.md: 4.04 / 3.41 / ... % at h = 1 / 0.75 / 0.5625 mm);
+//    with h at first order (taylor-impact.md: 4.04 / 3.14 / 2.48 % at h = 1 / 0.75 / 0.5625 mm);
 //  - final shape: L (max y + the particle's half extent (h/6) sum_j |F_yj|) and the
 //    foot radius R (max r + (h/6) sum_j |e_r . F e_j| over the particles seeded in
 //    the bottom cell layer) equal the study's h = 1 mm figures, L/L0 = 0.5941 and
