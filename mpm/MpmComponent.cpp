@@ -73,6 +73,7 @@ void MpmComponent::initialize() {
   stable_dt_ = std::min(stable_dt_, thermal_stable_timestep());
   time_ = 0.0;
   acc_strain_energy_ = 0.0;
+  plastic_work_ = 0.0;
 }
 
 // Vaango's explicit rule (UCNH::computeStressTensor, called by SerialMPM's
@@ -455,6 +456,7 @@ void MpmComponent::advance(double t, double dt, int step) {
     const bool work = setup_.accumulate_strain_energy;
     if (work) acc_strain_energy_ += 0.5 * piola_work(m.particles, m.F_old, m.F_old);  // sigma_n at F_n
     update_stress(m, step, dt);
+    plastic_work_ += plastic_work_of_step(m.particles, m.plastic_work);  // PlasticWork (mpm/StrainWork.h)
     if (work) acc_strain_energy_ += 0.5 * piola_work(m.particles, m.particles.F, m.F_old);  // sigma_{n+1} at F_{n+1}
     stable_dt_ = std::min(stable_dt_, material_stable_timestep(m));
   }

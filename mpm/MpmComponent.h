@@ -161,6 +161,8 @@ class MpmComponent final : public Component {
   std::array<double, 6> boundary_area_{};
   // AccStrainEnergy: the work of the stresses summed over the steps (mpm/StrainWork.h).
   double acc_strain_energy_ = 0.0;
+  // PlasticWork: the models' plastic work summed over the steps (mpm/StrainWork.h).
+  double plastic_work_ = 0.0;
   // Node aliases of the periodic directions (inactive without <periodic>).
   PeriodicNodes periodic_;
   MpmCoupling* coupling_ = nullptr;  // not owned

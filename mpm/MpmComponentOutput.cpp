@@ -16,7 +16,7 @@ const char* const kNodeLabels[] = {"g.mass", "g.volume", "g.velocity", "g.veloci
                                    "g.externalforce", "g.internalforce", "g.stressFS"};
 const char* const kReductionLabels[] = {"KineticEnergy", "StrainEnergy", "TotalMass", "TotalMomentum",
                                         "CenterOfMassPosition", "CenterOfMassVelocity", "AccStrainEnergy",
-                                        "MMSDisplacementErrorL2"};
+                                        "PlasticWork", "MMSDisplacementErrorL2"};
 
 void append(std::vector<double>& out, double v) { out.push_back(v); }
 void append(std::vector<double>& out, const Vec3& v) { out.insert(out.end(), v.data(), v.data() + 3); }
@@ -212,6 +212,8 @@ std::map<std::string, std::vector<double>> MpmComponent::reductions(const std::s
   if (labels.count("StrainEnergy")) out["StrainEnergy"] = {se};
   // AccStrainEnergy: the work of the stresses summed over the steps (mpm/StrainWork.h).
   if (labels.count("AccStrainEnergy")) out["AccStrainEnergy"] = {acc_strain_energy_};
+  // PlasticWork: the models' plastic work summed over the steps (a Tephra label; mpm/StrainWork.h).
+  if (labels.count("PlasticWork")) out["PlasticWork"] = {plastic_work_};
   if (labels.count("TotalMass")) out["TotalMass"] = {mass};
   if (labels.count("TotalMomentum")) out["TotalMomentum"] = {mom[0], mom[1], mom[2]};
   // sqrt(sum V0 |u_p - u_exact(X_p, t)|^2 / sum V0) with <run_MMS_problem>
@@ -255,6 +257,7 @@ void MpmComponent::save_state(StateArchive& a) const {
   a.put_scalar("mpm.stable_dt", stable_dt_);
   a.put_scalar("mpm.time", time_);
   a.put_scalar("mpm.acc_strain_energy", acc_strain_energy_);
+  a.put_scalar("mpm.plastic_work", plastic_work_);
   std::vector<double> bndy;
   for (int f = 0; f < 6; ++f) {
     append(bndy, boundary_force_[f]);
@@ -286,6 +289,7 @@ void MpmComponent::load_state(const StateArchive& a) {
   stable_dt_ = a.scalar("mpm.stable_dt");
   time_ = a.scalar("mpm.time");
   acc_strain_energy_ = a.has("mpm.acc_strain_energy") ? a.scalar("mpm.acc_strain_energy") : 0.0;
+  plastic_work_ = a.has("mpm.plastic_work") ? a.scalar("mpm.plastic_work") : 0.0;
   const std::vector<double>& bndy = a.doubles("mpm.boundary_force_area");
   if (bndy.size() != 24) throw RuntimeFailure("checkpoint array 'mpm.boundary_force_area' has a bad size");
   for (int f = 0; f < 6; ++f) {

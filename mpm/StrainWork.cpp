@@ -14,4 +14,10 @@ double piola_work(const Particles& p, const std::vector<Mat3>& F_stress, const s
   return sum;
 }
 
+double plastic_work_of_step(const Particles& p, const std::vector<double>& plastic_work) {
+  double sum = 0.0;
+  for (std::size_t i = 0; i < p.size() && i < plastic_work.size(); ++i) sum += p.volume0[i] * plastic_work[i];
+  return sum;
+}
+
 }  // namespace tephra

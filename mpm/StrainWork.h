@@ -20,4 +20,12 @@ namespace tephra {
 // particles' current stress sigma_p taken at deformation F_s = F_stress_p.
 double piola_work(const Particles& p, const std::vector<Mat3>& F_stress, const std::vector<Mat3>& F_old);
 
+// The PlasticWork reduction (a Tephra label; Vaango has no such reduction): the
+// dissipation of the step, sum_p V0_p w_p, with w_p the model's plastic work of
+// the step per reference volume (SolidUpdateOutput::plastic_work, e.g.
+// elastic_plastic_hp: J sigma : d_eps^p). Summed over the steps it is the
+// plastic work W_p of the energy balance KE + StrainEnergy + W_p = KE_0 + work
+// of the external forces (docs/models/taylor-impact.md).
+double plastic_work_of_step(const Particles& p, const std::vector<double>& plastic_work);
+
 }  // namespace tephra

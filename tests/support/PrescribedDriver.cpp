@@ -73,9 +73,10 @@ PrescribedHistory drive_prescribed(const std::string& model_xml, const std::vect
     out.history.push_back(std::move(hist));
     const auto& work = c->materials()[0].plastic_work;
     out.plastic_work.push_back(work.empty() ? 0.0 : work[0]);
-    const auto r = c->reductions({"StrainEnergy", "AccStrainEnergy"});
+    const auto r = c->reductions({"StrainEnergy", "AccStrainEnergy", "PlasticWork"});
     out.strain_energy.push_back(r.at("StrainEnergy").at(0));
     out.acc_strain_energy.push_back(r.at("AccStrainEnergy").at(0));
+    out.plastic_work_total.push_back(r.at("PlasticWork").at(0));
   };
   const double t0 = rows.front().t, t1 = rows.back().t;
   sample(t0);

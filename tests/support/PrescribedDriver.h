@@ -32,6 +32,7 @@ struct PrescribedHistory {
   std::vector<double> plastic_work;          // its model's dissipation of the step per reference volume [J/m^3]
   std::vector<double> strain_energy;      // reductions over the cell: StrainEnergy = sum W(F) V0 [J]
   std::vector<double> acc_strain_energy;  //   and AccStrainEnergy, the accumulated stress work [J]
+  std::vector<double> plastic_work_total; //   and PlasticWork, the accumulated plastic work [J]
 };
 
 struct PrescribedDriverOptions {
