@@ -1,6 +1,7 @@
 #include "ice/Equilibration.h"
 
 #include <cmath>
+#include <limits>
 
 namespace tephra {
 
@@ -90,7 +91,14 @@ EquilibrationResult equilibrate_pressure(std::vector<EquilibrationMaterial>& mat
       press[i] += dp;
       s.press[a] = press[i];
       // Convergence is judged on the step just taken; theta is refreshed below.
-      s.done[a] = std::abs(dp) <= tol * press[i] && std::abs(A - 1.0) <= tol;
+      // The step is small enough when |dp| <= tol p, or when it changes
+      // sum theta (by C dp, C = -d sum theta/dp) by no more than the round-off
+      // of that sum (4 nm ulp): when every material is stiff (a cell filled by
+      // solids with a trace of gas: C p ~ 1e-6) the pressure is resolved only
+      // to eps/C ~ 1e-10 p and Newton cycles between neighbouring values at
+      // that distance (guni2dRT.ups at step 0).
+      const double resolution = 4.0 * double(nm) * std::numeric_limits<double>::epsilon();
+      s.done[a] = (std::abs(dp) <= tol * press[i] || std::abs(dp) * C <= resolution) && std::abs(A - 1.0) <= tol;
     }
     for (std::size_t k = 0; k < nm; ++k) {
       EquilibrationMaterial& m = mats[k];

@@ -32,7 +32,9 @@ struct EquilibrationResult {
 
 // All spans have the same length n (cells). `press` holds a starting guess on
 // entry (used by Newton only; one material ignores it) and the result on exit.
-// Converged when |dp| <= tol * p and |sum theta - 1| <= tol in every cell.
+// Converged when |sum theta - 1| <= tol and the last Newton step dp is below
+// tol * p or below the round-off resolution of sum theta (|dp| C <= 4 nm eps,
+// C = -d sum theta/dp) in every cell.
 EquilibrationResult equilibrate_pressure(std::vector<EquilibrationMaterial>& mats, std::span<double> press,
                                          int max_iterations, double tol = 1e-11);
 

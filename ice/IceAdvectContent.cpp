@@ -35,6 +35,21 @@
 // mixtures keep Uintah's compatible fluxes.
 // A documented departure from Uintah (which weights the vertex values of the
 // specific quantities with the mass centroids, mass_massVertex_ratio).
+//
+// Positivity of the mixture contents (T and v are positive): a second-order
+// slab value psi_slab may exceed the donor's psi_D (up to its neighbours'
+// maximum), so a donor that sends most of its mass out in one step can send
+// more content than it holds, sum_out F_M psi_slab > M_L psi_L, and its
+// psi_new = Q_new / M_new turns negative. This happens to a trace material
+// (theta ~ 1e-13) inside an MPMICE solid, whose face fluxes the solids'
+// volume fluxes scale up to half its mass per face (IceLagrangianFlux.cpp;
+// guni2dRT.ups, step 5: v = -0.67 m^3/kg). Such a donor's outgoing faces
+// carry its own value instead, F = F_M psi_D (first order). Then every cell
+// keeps Q_new >= 0: a flagged donor sends psi_D sum_out F_M <= psi_D M_L (its
+// mass outflow is at most its mass), an unflagged one at most M_L psi_L, and
+// inflows are >= 0. A donor that does not overdraw keeps its bits.
+#include <algorithm>
+
 #include "core/grid/Loop.h"
 #include "ice/IceAdvection.h"
 #include "ice/IceComponent.h"
@@ -69,10 +84,50 @@ void update_from_fluxes(const Grid& g, const FaceScalars& F, Base&& base, const 
 
 }  // namespace
 
+// The positivity fallback of the header: donors with sum_out F_psi > M_L psi_L
+// (flagged in `flag`, a cell scratch with ghosts, exchanged so that both
+// patches of a shared face agree) send F_M psi_D through their outgoing faces.
+void IceComponent::keep_contents_nonnegative(std::size_t m, const CellScalars& psi_L, CellScalars& flag) {
+  const Grid& g = setup_.grid;
+  const CellScalars& mass_L = mass_L_[m];
+  bool any = false;
+  for (std::size_t pi = 0; pi < g.patches.size(); ++pi) {
+    flag[pi].fill(0.0);
+    const IndexRange cells = g.patches[pi].cells();
+    for_each_cell_serial(cells, [&](int i, int j, int k) {
+      const IntVec3 c(i, j, k);
+      double out = 0;  // content leaving c: negative flux on its low faces, positive on its high faces
+      for (int d = 0; d < 3; ++d) {
+        const IntVec3 hi = c + IntVec3::Unit(d);
+        out += std::max(0.0, -flux2_.at(d, pi)(c)) + std::max(0.0, flux2_.at(d, pi)(hi));
+      }
+      if (out > mass_L[pi](c) * psi_L[pi](c)) {
+        flag[pi](c) = 1.0;
+        any = true;
+      }
+    });
+  }
+  if (!layout_.any(any)) return;
+  halo_->exchange(flag);
+  for (std::size_t pi = 0; pi < g.patches.size(); ++pi)
+    for (int d = 0; d < 3; ++d) {
+      const IndexRange cells = g.patches[pi].cells();
+      const IndexRange faces{cells.lo, cells.hi + IntVec3::Unit(d)};
+      const GridArray<double>& mf = flux_.at(d, pi);
+      GridArray<double>& F = flux2_.at(d, pi);
+      for_each_cell_serial(faces, [&](int i, int j, int k) {
+        const IntVec3 f(i, j, k);
+        const IntVec3 donor = mf(f) > 0.0 ? IntVec3(f - IntVec3::Unit(d)) : f;
+        if (flag[pi](donor) != 0.0) F(f) = mf(f) * psi_L[pi](donor);
+      });
+    }
+}
+
 void IceComponent::advect_content(std::size_t m, const CellScalars& psi_L, CellScalars& out, double dt) {
   const Grid& g = setup_.grid;
   if (mats_.size() > 1) {  // compatible fluxes F_M psi_slab (flux_ holds m's mass fluxes)
     specific_fluxes(g, setup_.advection, psi_L, mats_[m].vel_FCME, flux_, dt, flux2_);
+    keep_contents_nonnegative(m, psi_L, content_);  // content_: scratch for the donor flags
     const CellScalars& mass_L = mass_L_[m];
     update_from_fluxes(g, flux2_, [&](std::size_t pi, int i, int j, int k) {
       return mass_L[pi](i, j, k) * psi_L[pi](i, j, k);

@@ -164,6 +164,14 @@ void IceComponent::initialize() {
 // A cell the fluid geometry leaves empty (sum f = 0) is filled by the first
 // fluid material in its first source's state. (Departure from Uintah, which
 // keeps the geometric fractions; docs/mpmice.md.)
+void IceComponent::exchange_cell_state(std::size_t m) {
+  IceMaterialFields& f = mats_[m];
+  halo_->exchange(f.rho_CC);
+  halo_->exchange(f.vel_CC);
+  halo_->exchange(f.temp_CC);
+  halo_->exchange(f.sp_vol_CC);
+}
+
 void IceComponent::fluids_fill_volume_left_by_solids() {
   const Grid& g = setup_.grid;
   const std::size_t nm = mats_.size();

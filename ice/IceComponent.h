@@ -63,6 +63,9 @@ class IceComponent final : public Component {
   // around the MPM internal force.
   void set_lagrangian_state_fill(std::function<void(IceComponent&)> fill) { lagrangian_fill_ = std::move(fill); }
   std::vector<IceMaterialFields>& mutable_fields() { return mats_; }
+  // Fills the ghost cells of material m's state (rho_CC, vel_CC, temp_CC,
+  // sp_vol_CC) from the owning patches: MPMICE after writing a solid's cell state.
+  void exchange_cell_state(std::size_t m);
   // Steps 2-6 of the coupled order: equilibration pressure, face velocities
   // and their exchange, model sources (mass conversion, step 4), pressure
   // increment, face pressure.
@@ -93,6 +96,7 @@ class IceComponent final : public Component {
   // out = psi of material m after advection, psi_L advected as the content
   // M_L psi_L, a density-like quantity (IceAdvectContent.cpp); needs mass_new_ of m.
   void advect_content(std::size_t m, const CellScalars& psi_L, CellScalars& out, double dt);
+  void keep_contents_nonnegative(std::size_t m, const CellScalars& psi_L, CellScalars& flag);  // IceAdvectContent.cpp
   // Total-energy corrections (IceEnergy.cpp, <conserveTotalEnergy>): the
   // face-pressure work in the Lagrangian phase and DeBar's kinetic energy
   // lost by the advection.

@@ -76,6 +76,12 @@ void IceComponent::compute_equilibration_pressure(int step) {
       os << "ICE equilibration pressure did not converge in " << setup_.max_iter_equilibration
          << " iterations at step " << step << " in cell (" << failed[row] << "," << box.lo[1] + jr << ","
          << box.lo[2] + kr << ")";
+      // The materials' start-of-step state in that cell (the why).
+      const IntVec3 c(int(failed[row]), int(box.lo[1] + jr), int(box.lo[2] + kr));
+      for (std::size_t m = 0; m < nm; ++m)
+        os << "; material " << m << ": rho_CC " << mats_[m].rho_CC[pi](c) << " kg/m^3, T " << mats_[m].temp_CC[pi](c)
+           << " K, sp_vol " << mats_[m].sp_vol_CC[pi](c) << " m^3/kg";
+      os << "; p guess " << press_CC_[pi](c) << " Pa";
       throw NumericalFailure(os.str());
     }
     apply_pressure_bc(pi, press_equil_CC_);
@@ -535,7 +541,13 @@ void IceComponent::lagrangian_values_and_exchange(double dt) {
           why = os.str();
         });
     }
-    if (layout_.any(!why.empty())) throw StepRestart{why.empty() ? "a bad Lagrangian specific volume on another MPI rank" : why};
+    if (layout_.any(!why.empty())) {
+      if (why.empty()) why = "a bad Lagrangian specific volume on another MPI rank";
+      // MPMICE cannot redo the step (the particles have moved): stop with where and why.
+      for (const IceMaterialSpec& spec : setup_.materials)
+        if (spec.lagrangian) throw NumericalFailure("MPMICE Lagrangian values: " + why + " (a coupled step cannot be redone)");
+      throw StepRestart{why};
+    }
   }
   // Boundary values of the Lagrangian state; output copies.
   for (std::size_t m = 0; m < nm; ++m) {

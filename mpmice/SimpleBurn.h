@@ -2,9 +2,8 @@
 // The point functions of Vaango's Simple_Burn model (<Model type="Simple_Burn">;
 // the Vaango/Uintah user guide "Simple Burn", rate m_dot = A p^0.778; the
 // surface criterion and area of Vaango's HEChem/Common.cc), for the MPMICE
-// mass conversion from an MPM reactant to an ICE product gas. NOT YET WIRED
-// into the coupled step (docs/mpmice.md "What does not work"): decks with
-// <Models> stay a MissingFeature (exit 3).
+// mass conversion from an MPM reactant to an ICE product gas (used by
+// SimpleBurnModel.cpp in step 4 of the coupled step; docs/mpmice.md).
 //
 // A cell's corner values wm[n] = w_n m_n are the 8 nodes' solid masses times
 // their node -> cell weights (mpmice/CellProjection.h: 1/8, doubled per

@@ -15,24 +15,25 @@ SolidEos::SolidEos(ConstitutiveModelP model, double density0, double p_ref, cons
                "' needs a positive reference pressure (p = p_ref (rho/rho0)^(K/p_ref) in expansion)");
 }
 
-// The model's hooks, or with <useModifiedEOS> the expansion branch of models/solid/ModifiedEos.h.
+// The model's hooks, or with <useModifiedEOS> the expansion branch of models/solid/ModifiedEos.h,
+// in absolute pressure (a pressure far below p_ref keeps its digits).
 SolidEosPoint SolidEos::point(double rho, double T) const {
-  return *mpmice_pressure_at_density(*model_, rho, rho0_, T, p_ref_);
+  return *mpmice_absolute_pressure_at_density(*model_, rho, rho0_, T, p_ref_);
 }
 
-double SolidEos::rho_at(double p_gauge, double T) const {
-  return *mpmice_density_at_pressure(*model_, p_gauge, rho0_, T, p_ref_);
+double SolidEos::rho_at(double p, double T) const {
+  return *mpmice_density_at_absolute_pressure(*model_, p, rho0_, T, p_ref_);
 }
 
 void SolidEos::evaluate(std::span<const double> rho, std::span<const double> T, std::span<EosState> out) const {
   for (std::size_t i = 0; i < rho.size(); ++i) {
     const SolidEosPoint e = point(rho[i], T[i]);
-    out[i] = {p_ref_ + e.pressure, e.dp_drho, 0.0, e.c2};
+    out[i] = {e.pressure, e.dp_drho, 0.0, e.c2};
   }
 }
 
 void SolidEos::density(std::span<const double> p, std::span<const double> T, std::span<double> rho) const {
-  for (std::size_t i = 0; i < p.size(); ++i) rho[i] = rho_at(p[i] - p_ref_, T[i]);
+  for (std::size_t i = 0; i < p.size(); ++i) rho[i] = rho_at(p[i], T[i]);
 }
 
 void SolidEos::thermal_expansivity(std::span<const double> rho, std::span<const double>, std::span<double> beta) const {

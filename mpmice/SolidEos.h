@@ -29,7 +29,7 @@ class SolidEos final : public EquationOfState {
 
  private:
   SolidEosPoint point(double rho, double T) const;
-  double rho_at(double p_gauge, double T) const;
+  double rho_at(double p, double T) const;  // absolute p
   ConstitutiveModelP model_;
   double rho0_, p_ref_;
 };

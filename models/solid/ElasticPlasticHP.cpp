@@ -18,7 +18,7 @@
 namespace tephra {
 
 namespace {
-enum HistoryIndex { kEpsP = 0, kEpsPRate = 1, kPorosity = 2, kDamage = 3, kLocalized = 4, kHistoryCount = 5 };
+enum HistoryIndex { kEpsP = 0, kEpsPRate = 1, kPorosity = 2, kDamage = 3, kLocalized = 4, kStrainRate = 5, kHistoryCount = 6 };
 constexpr int kMaxHistory = kHistoryCount + 5 + 9;  // + plasticVolumetricStrain, initialFieldsDrawn, T_0, T_last, mtsStructureStress, backStress
 }  // namespace
 
@@ -29,7 +29,8 @@ std::vector<HistoryVariable> ElasticPlasticHP::history() const {
       {"plasticStrainRate", 1, {0.0}, "equivalent plastic strain rate ε̇_p = Δε_p/Δt [1/s]"},
       {"porosity", 1, {failure_.initial_porosity}, "void volume fraction φ [-]"},
       {"damage", 1, {failure_.initial_damage()}, "scalar damage D [-]"},
-      {"localized", 1, {0.0}, "1 once the point failed (melting, TEPLA, max stress, stability), else 0"}};
+      {"localized", 1, {0.0}, "1 once the point failed (melting, TEPLA, max stress, stability), else 0"},
+      {"strainRate", 1, {0.0}, "total equivalent strain rate sqrt(2/3) |d|, d = de/dt of the step [1/s]"}};
   if (k_evp_ >= 0)
     h.push_back({"plasticVolumetricStrain", 1, {0.0}, "ln J^p = sum of tr(Delta eps^p) (porous yield only) [-]"});
   if (k_drawn_ >= 0)
@@ -55,6 +56,9 @@ bool ElasticPlasticHP::update_point(const Eigen::Matrix3d& F_old, const Eigen::M
   // Unrotated strain increment (midpoint rule for d_hat = sym(U_dot U^{-1})).
   const Eigen::Matrix3d G = (b.U - a.U) * (0.5 * (a.U + b.U)).inverse();
   const Eigen::Matrix3d de = 0.5 * (G + G.transpose());
+  // Vaango's p.strainRate: the total equivalent strain rate sqrt(2/3) |D| (Frobenius norm of the
+  // rotated rate of deformation, unchanged by the rotation), here with D = de/dt.
+  hist[kStrainRate] = dt > 0.0 ? std::sqrt(2.0 / 3.0) * de.norm() / dt : 0.0;
   const Eigen::Matrix3d tau_n = a.R.transpose() * stress_old * a.R;
   const double p_n = tau_n.trace() / 3.0;
   const Eigen::Matrix3d s_n = tau_n - p_n * I;

@@ -101,7 +101,7 @@ class ElasticPlasticHP final : public ConstitutiveModel {
   bool modified_eos() const override { return p_.use_modified_eos; }
 
   // The point update (what update() does for one point; unit tests call it).
-  // hist = {ε_p, ε̇_p, φ, D, localized, [ln J^p], [drawn], [σ_e], [β (9, row-major)]} (flat),
+  // hist = {ε_p, ε̇_p, φ, D, localized, strainRate, [ln J^p], [drawn], [σ_e], [β (9, row-major)]} (flat),
   // read at t_n and overwritten with t_{n+1}.
   using PointOut = MetalPointOut;
   bool update_point(const Eigen::Matrix3d& F_old, const Eigen::Matrix3d& F_new, const Eigen::Matrix3d& stress_old,

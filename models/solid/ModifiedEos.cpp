@@ -43,4 +43,27 @@ std::optional<double> mpmice_density_at_pressure(const ConstitutiveModel& model,
   return modified_eos_expansion_density(p_gauge, density0, *K0, p_ref);
 }
 
+std::optional<SolidEosPoint> mpmice_absolute_pressure_at_density(const ConstitutiveModel& model, double rho,
+                                                                 double density0, double T, double p_ref) {
+  std::optional<SolidEosPoint> e;
+  if (!model.modified_eos() || rho >= density0) {
+    e = model.pressure_at_density(rho, density0, T);
+    if (e) e->pressure += p_ref;
+    return e;
+  }
+  const auto K0 = reference_bulk_modulus(model, density0, T);
+  if (!K0) return std::nullopt;
+  e = modified_eos_expansion(rho, density0, *K0, p_ref);
+  e->pressure = p_ref * std::pow(rho / density0, *K0 / p_ref);  // absolute, no p_ref - p_ref
+  return e;
+}
+
+std::optional<double> mpmice_density_at_absolute_pressure(const ConstitutiveModel& model, double p, double density0,
+                                                          double T, double p_ref) {
+  if (!model.modified_eos() || p >= p_ref) return model.density_at_pressure(p - p_ref, density0, T);
+  const auto K0 = reference_bulk_modulus(model, density0, T);
+  if (!K0) return std::nullopt;
+  return density0 * std::pow(p / p_ref, p_ref / *K0);
+}
+
 }  // namespace tephra

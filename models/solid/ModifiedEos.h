@@ -33,4 +33,13 @@ std::optional<SolidEosPoint> mpmice_pressure_at_density(const ConstitutiveModel&
 std::optional<double> mpmice_density_at_pressure(const ConstitutiveModel& model, double p_gauge, double density0,
                                                  double T, double p_ref);
 
+// The same in absolute pressure p (gauge + p_ref), what the MPMICE equilibration needs: the
+// expansion branch is evaluated as p = p_ref (rho/rho0)^n and rho = rho0 (p/p_ref)^{1/n}
+// directly, without the round trip p_ref + (p - p_ref), which loses every digit of a pressure
+// below eps p_ref (a solid expanded to p ~ 1e-12 Pa read back as rho = 0; guni2dRT.ups).
+std::optional<SolidEosPoint> mpmice_absolute_pressure_at_density(const ConstitutiveModel& model, double rho,
+                                                                 double density0, double T, double p_ref);
+std::optional<double> mpmice_density_at_absolute_pressure(const ConstitutiveModel& model, double p, double density0,
+                                                          double T, double p_ref);
+
 }  // namespace tephra

@@ -7,6 +7,8 @@
 
 #include <gtest/gtest.h>
 
+#include <Eigen/Geometry>
+
 #include "models/solid/ConstitutiveModel.h"
 #include "tests/support/SolidModelDriver.h"
 
@@ -209,6 +211,38 @@ TEST(ElasticPlasticHP, UnimplementedOptionsAreMissingFeatures) {
   auto ba = base();
   ba.strings["plastic_convergence_algo"] = "newton";
   EXPECT_THROW(create_constitutive_model("elastic_plastic_hp", ba), std::invalid_argument);
+}
+
+// p.strainRate (Vaango's ElasticPlasticHP label, saved by MPMICE/guni2dRT.ups):
+// sqrt(2/3) |D| with D = de/dt, de = sym((U1 - U0)((U0 + U1)/2)^{-1}). Uniaxial
+// stretch U = diag(l, 1, 1) from l0 to l1: de_11 = 2 (l1 - l0)/(l0 + l1), the
+// other entries 0, so the rate is sqrt(2/3) 2 |l1 - l0| / ((l0 + l1) dt) in the
+// elastic and in the plastic range. A rigid rotation R of both F_n and F_{n+1}
+// leaves U, hence the rate, unchanged.
+TEST(ElasticPlasticHP, StrainRateIsTheTotalEquivalentRate) {
+  const auto m = linear_model(1e9);
+  ASSERT_TRUE(m);
+  int k_rate = 0;
+  while (k_rate < int(m->history().size()) && m->history()[k_rate].name != "strainRate") ++k_rate;
+  ASSERT_LT(k_rate, int(m->history().size()));
+  const Eigen::Matrix3d R = Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix();
+  for (const bool rotated : {false, true}) {
+    test::PointState s(*m);
+    const Eigen::Matrix3d Q = rotated ? R : Eigen::Matrix3d::Identity();
+    s.F = Q;
+    const double dt = 1e-6;
+    double l0 = 1.0;
+    for (int k = 1; k <= 40; ++k) {  // to 1 % stretch: 2G eps passes s0 near eps = 8e-4 (plastic after step 4)
+      const double l1 = 1.0 + 2.5e-4 * k;
+      Eigen::Matrix3d F = Eigen::Matrix3d::Identity();
+      F(0, 0) = l1;
+      ASSERT_EQ(test::step_point(*m, 8930.0, s, Eigen::Matrix3d(Q * F), dt), -1);
+      const double expected = std::sqrt(2.0 / 3.0) * 2.0 * (l1 - l0) / ((l0 + l1) * dt);
+      EXPECT_NEAR(s.history[k_rate][0], expected, 1e-9 * expected) << "step " << k << " rotated " << rotated;
+      l0 = l1;
+    }
+    EXPECT_GT(s.history[0][0], 0.0);  // the path went plastic
+  }
 }
 
 }  // namespace

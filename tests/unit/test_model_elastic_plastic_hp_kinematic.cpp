@@ -48,7 +48,7 @@ TEST(ElasticPlasticHPKinematic, MissingFeatureCombinations) {
   EXPECT_TRUE(is_missing(g));  // porous return has no backstress
   auto none = base();
   none.add_block("kinematic_hardening_model", "none");
-  EXPECT_EQ(create_constitutive_model("elastic_plastic_hp", none)->history().size(), 5u);
+  EXPECT_EQ(create_constitutive_model("elastic_plastic_hp", none)->history().size(), 6u);  // + strainRate
 }
 
 }  // namespace

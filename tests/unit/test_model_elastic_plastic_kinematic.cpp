@@ -39,7 +39,7 @@ struct Variant {
   std::size_t history_size;
 };
 constexpr Variant kElasticPlastic{"elastic_plastic", 6, 7};
-constexpr Variant kElasticPlasticHP{"elastic_plastic_hp", 5, 6};
+constexpr Variant kElasticPlasticHP{"elastic_plastic_hp", 6, 7};  // + strainRate
 constexpr int kBeta = kElasticPlastic.beta_column;  // for the elastic_plastic-only tests
 
 MapModelParameters base(const Variant& v = kElasticPlastic) {
