@@ -26,12 +26,24 @@ namespace tephra {
 
 MpmComponent::MpmComponent(MpmSetup setup) : setup_(std::move(setup)) {
   const Grid& g = setup_.grid;
+  // Ghost node layers of the periodic directions (mpm/PeriodicGrid.h; none there for linear).
+  IntVec3 ghost = IntVec3::Zero();
+  for (int d = 0; d < 3; ++d)
+    if (g.periodic[d]) ghost[d] = std::max(0, periodic_ghost_layers(setup_.flags.interpolator.kind));
   for (MpmMaterial& m : setup_.materials) {
-    // Nodes of the interior and extra cells: node 0 at lower - extra*dx.
-    m.grid.origin = g.lower - (g.extra_cells.cast<double>().array() * g.dx.array()).matrix();
+    // Nodes of the interior and extra cells (or periodic ghosts): node 0 at lower - extra*dx.
+    m.grid.extra = g.extra_cells + ghost;
+    m.grid.ghost = ghost;
+    m.grid.origin = g.lower - (m.grid.extra.cast<double>().array() * g.dx.array()).matrix();
     m.grid.h = g.dx;
-    m.grid.n = g.cells + 2 * g.extra_cells + IntVec3::Ones();
-    m.grid.extra = g.extra_cells;
+    m.grid.n = g.cells + 2 * m.grid.extra + IntVec3::Ones();
+    // A periodic face is not a domain boundary: no BC there (as ICE, ice/IceDeck.cpp, and Uintah).
+    for (int d = 0; d < 3; ++d)
+      if (g.periodic[d])
+        for (int f : {2 * d, 2 * d + 1}) {
+          m.bcs.face[f] = FaceVelocityBC{};
+          m.bcs.temperature[f].reset();
+        }
     // The friction contacts read g.stressFS (CoulombExchangeLoop.h): always summed with contact.
     m.grid.node_stress = setup_.node_stress || (setup_.contact && setup_.materials.size() > 1);
     m.grid.reset();
@@ -146,6 +158,7 @@ void MpmComponent::interpolate_to_grid(MpmMaterial& m, int step, const char* pha
   // not for axisymmetric runs, whose r = 0 axis is not a plane mirror of the weights).
   if (!setup_.flags.axisymmetric) fold_symmetry_particle_sums(m.bcs, m.grid);
   m.bcs.apply(m.grid, m.grid.velocity);
+  copy_from_canonical(periodic_, m.grid.velocity);  // the ghosts follow their images
 }
 
 void MpmComponent::reorder_particles(MpmMaterial& m) {
@@ -383,6 +396,7 @@ void MpmComponent::advance(double t, double dt, int step) {
     for (std::size_t i = 0; i < mats.size(); ++i) {
       MpmMaterial& m = mats[i];
       m.bcs.apply(m.grid, m.grid.velocity_star);
+      copy_from_canonical(periodic_, m.grid.velocity_star);
       if (velocity_surfaces) impose_surface_velocities(i, t + dt, m.grid.velocity_star);
       if (contact) {
         for (std::size_t g = 0; g < m.grid.count(); ++g)
@@ -423,6 +437,7 @@ void MpmComponent::advance(double t, double dt, int step) {
         }
         if (!setup_.flags.axisymmetric) fold_symmetry_velocity(m.bcs, m.grid, musl_velocity_[i]);
         m.bcs.apply(m.grid, musl_velocity_[i]);
+        copy_from_canonical(periodic_, musl_velocity_[i]);
         if (velocity_surfaces) impose_surface_velocities(i, t + dt, musl_velocity_[i]);
         std::swap(m.grid.velocity_star, musl_velocity_[i]);  // l_p and contact read g.velocity_star
       }

@@ -170,14 +170,23 @@ void MpmComponent::fill_output(const std::set<std::string>& labels, OutputFrame&
     sort_by_id(b);
     frame.particles.push_back(std::move(b));
 
+    const NodeGrid& g = m.grid;
+    // The frame's nodes: without the periodic ghost layers (mpm/PeriodicGrid.h).
+    const std::vector<std::size_t> kept = nodes_without_ghosts(g);
     auto node = [&](const char* label, const auto& column) {
       if (!want(label)) return;
-      GridFieldArray g;
-      g.location = GridLocation::Node;
-      g.data = field(label, m.index, column);
-      frame.grid_fields.push_back(std::move(g));
+      GridFieldArray gf;
+      gf.location = GridLocation::Node;
+      if (kept.empty() || column.empty()) {
+        gf.data = field(label, m.index, column);
+      } else {
+        std::decay_t<decltype(column)> cropped;
+        cropped.reserve(kept.size());
+        for (std::size_t n : kept) cropped.push_back(column[n]);
+        gf.data = field(label, m.index, cropped);
+      }
+      frame.grid_fields.push_back(std::move(gf));
     };
-    const NodeGrid& g = m.grid;
     node("g.mass", g.mass);
     node("g.volume", g.volume);
     node("g.velocity", g.velocity);

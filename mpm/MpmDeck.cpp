@@ -136,10 +136,11 @@ std::unique_ptr<MpmComponent> make_mpm_component(const Deck& deck) {
   read_loads_and_drivers(deck, setup);
   // GIMP, CPDI and quadratic B-spline supports reach past the particle's
   // cell: a particle near a domain face weights the node layer of the extra
-  // cells. (4thorderBS does not: its face-modified splines stay inside.)
+  // cells. (4thorderBS does not: its face-modified splines stay inside.) A
+  // periodic direction has ghost node layers instead (mpm/PeriodicGrid.h).
   const InterpolatorKind kind = setup.flags.interpolator.kind;
   if (kind != InterpolatorKind::Linear && kind != InterpolatorKind::CubicBspline &&
-      (setup.grid.extra_cells.array() < 1).any())
+      (setup.grid.extra_cells.array() < 1 && setup.grid.periodic.array() == 0).any())
     grid_node.fail("the MPM interpolator '" + interpolator_name(setup.flags.interpolator.kind) +
                    "' needs <extraCells> >= 1 in every direction (its support reaches the node layer "
                    "outside the domain)");

@@ -56,10 +56,13 @@ void read_loads_and_drivers(const Deck& deck, MpmSetup& setup) {
     if (setup.grid.lower[0] < 0.0) flag.fail("axisymmetric MPM: x is the radius, the grid must start at x >= 0");
     if ((setup.grid.periodic.array() != 0).any()) flag.missing_feature("axisymmetric MPM with periodic directions");
   }
-  // Periodic directions (mpm/PeriodicGrid.h): linear interpolation only.
-  if ((setup.grid.periodic.array() != 0).any() && setup.flags.interpolator.kind != InterpolatorKind::Linear)
+  // Periodic directions (mpm/PeriodicGrid.h): every interpolator with a
+  // translation-invariant support (ghost node layers); not the cubic
+  // B-spline, whose splines are modified at the domain faces.
+  if ((setup.grid.periodic.array() != 0).any() && periodic_ghost_layers(setup.flags.interpolator.kind) < 0)
     root.require_child("Grid").missing_feature("periodic MPM with the '" + interpolator_name(setup.flags.interpolator.kind) +
-                              "' interpolator (implemented: linear)");
+                              "' interpolator (boundary-modified splines; implemented: linear, gimp, cpgimp, cpdi, "
+                              "cpti, 3rdorderBS)");
 }
 
 void check_body_force_stress(const Deck& deck, MpmSetup& setup) {

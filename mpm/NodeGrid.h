@@ -12,8 +12,13 @@ struct NodeGrid {
   Vec3 origin = Vec3::Zero();  // position of node (0,0,0)
   Vec3 h = Vec3::Ones();       // node spacing (the cell size)
   IntVec3 n = IntVec3::Ones(); // nodes per direction
-  IntVec3 extra = IntVec3::Zero(); // extra-cell layers per side: the domain's faces are
-                                   // the node planes extra and n - 1 - extra
+  IntVec3 extra = IntVec3::Zero(); // node layers beyond each domain face: the domain's faces are
+                                   // the node planes extra and n - 1 - extra. The deck's extra
+                                   // cells, or in a periodic direction (no extra cells there)
+                                   // the ghost layers below
+  IntVec3 ghost = IntVec3::Zero(); // periodic ghost layers (included in extra): aliases of the
+                                   // nodes one period away, which the wide stencils (gimp, cpdi,
+                                   // B-splines) reach across a periodic face (mpm/PeriodicGrid.h)
 
   std::vector<double> mass;            // m_g = sum m_p S_gp                      (g.mass)
   std::vector<double> volume;          // V_g = sum V_p S_gp                      (g.volume)

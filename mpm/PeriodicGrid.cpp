@@ -58,6 +58,34 @@ void fold_internal_force(const PeriodicNodes& map, NodeGrid& g) {
   fold(map.canonical, g.internal_force, Vec3::Zero().eval());
 }
 
+int periodic_ghost_layers(InterpolatorKind kind) {
+  switch (kind) {
+    case InterpolatorKind::Linear: return 0;
+    case InterpolatorKind::Gimp:
+    case InterpolatorKind::QuadraticBspline: return 1;
+    case InterpolatorKind::CpGimp:
+    case InterpolatorKind::Cpdi:
+    case InterpolatorKind::Cpti: return 2;
+    case InterpolatorKind::CubicBspline: return -1;
+  }
+  return -1;
+}
+
+void copy_from_canonical(const PeriodicNodes& map, std::vector<Vec3>& v) {
+  if (!map.active()) return;
+  for (std::size_t g = 0; g < v.size(); ++g) v[g] = v[map.canonical[g]];
+}
+
+std::vector<std::size_t> nodes_without_ghosts(const NodeGrid& g) {
+  std::vector<std::size_t> out;
+  if ((g.ghost.array() == 0).all()) return out;
+  const IntVec3 lo = g.ghost, hi = g.n - g.ghost;
+  for (int k = lo[2]; k < hi[2]; ++k)
+    for (int j = lo[1]; j < hi[1]; ++j)
+      for (int i = lo[0]; i < hi[0]; ++i) out.push_back(g.index(i, j, k));
+  return out;
+}
+
 void wrap_periodic_positions(const Grid& grid, Particles& p) {
   for (int d = 0; d < 3; ++d) {
     if (!grid.periodic[d]) continue;

@@ -11,11 +11,27 @@
 // face re-enters at the other: x_d <- lower_d + (x_d - lower_d) mod L_d
 // (its displacement u keeps the unwrapped motion).
 //
-// Only the linear interpolator: GIMP, CPDI and B-spline supports reach the
-// node plane outside the domain, which a periodic direction does not store
-// (a MissingFeature, make_mpm_component). Contact normals across a periodic
-// face are not folded either (contact with periodic directions is a
-// MissingFeature).
+// Wide stencils (mpm/shape): a periodic direction gets `ghost` node layers
+// beyond each periodic face (NodeGrid::ghost, counted in NodeGrid::extra;
+// node 0 sits ghost cells below the lower face). Ghost node extra - k is the
+// alias of node extra + N - k: the canonical map takes node index c to
+// extra + ((c - extra) mod N), so the particle sums that a gimp, B-spline or
+// CPDI-corner stencil leaves on ghost nodes land on their periodic images,
+// and every alias reads the folded total (Uintah's periodic patches fill the
+// same ghost nodes from the opposite side). Ghost layers per interpolator
+// (periodic_ghost_layers): linear 0 (its support is the particle's cell);
+// gimp (l <= h/2) and 3rdorderBS reach 1.5 cells from the particle: 1;
+// cpgimp (l <= h) and cpdi/cpti (corners within one cell of the particle,
+// each with a linear support of one cell): 2; a stencil that reaches further
+// stops the run (the particle's stencil leaves the grid: exit 4). The
+// boundary-modified cubic B-spline (4thorderBS) has no periodic form
+// (MissingFeature). Contact normals across a periodic face are not folded
+// (contact with periodic directions is a MissingFeature), nor heat conduction.
+//
+// A periodic face is not a domain boundary (Uintah; ICE here does the same,
+// ice/IceDeck.cpp): its velocity and temperature BCs are not applied
+// (MpmComponent's constructor clears them). After the grid BCs of the other
+// faces, copy_from_canonical gives every ghost the value of its image.
 #include <cstddef>
 #include <vector>
 
@@ -23,6 +39,7 @@
 #include "core/grid/Grid.h"
 #include "mpm/NodeGrid.h"
 #include "mpm/Particles.h"
+#include "mpm/shape/Interpolator.h"
 
 namespace tephra {
 
@@ -41,6 +58,18 @@ void fold_particle_sums(const PeriodicNodes& map, NodeGrid& g);
 
 // The same for f_int.
 void fold_internal_force(const PeriodicNodes& map, NodeGrid& g);
+
+// Ghost node layers a periodic direction needs for `kind`; -1: no periodic form (4thorderBS).
+int periodic_ghost_layers(InterpolatorKind kind);
+
+// v[g] <- v[canonical[g]] for every node (after the grid BCs, which set only
+// the domain's nodes: the ghosts follow their images).
+void copy_from_canonical(const PeriodicNodes& map, std::vector<Vec3>& v);
+
+// The node indices of the grid without its ghost layers (the nodes the
+// output frame stores: cells + 2 extra cells + 1 per direction), in index
+// order; empty when the grid has no ghost layer.
+std::vector<std::size_t> nodes_without_ghosts(const NodeGrid& g);
 
 // x_d <- lower_d + (x_d - lower_d) mod L_d in every periodic direction.
 void wrap_periodic_positions(const Grid& grid, Particles& p);

@@ -84,15 +84,38 @@ TEST(MpmMmsConvergence, CpdiSecondOrder) {
 //    5.3582e-5, 1.4112e-5 (orders 1.97, 1.92), and cpGIMP, the same GIMP
 //    convolution with l = l0 F_dd, converges at 1.99, 2.02 at A = 0.05.
 // So second order at A = 0.05 is not reachable with Vaango's gimp and
-// 3rdorderBS: these two tests stay disabled (not loosened).
-TEST(MpmMmsConvergence, DISABLED_GimpSecondOrder) {
-  const Study s = run_study("gimp");
-  EXPECT_GE(s.order(1), 1.8);
+// 3rdorderBS at a fixed number of particles per cell (session 13, docs
+// "gimp: error against particles per cell at fixed h": at 16^3 the error
+// falls with ppc 1..4 toward e_inf = 4.4e-4, e(ppc) ~ e_inf + C/ppc^2, and
+// 8^3 at 2 ppc -> 16^3 at 4 ppc converges at 2.10). The former
+// DISABLED_GimpSecondOrder / DISABLED_QuadraticBsplineSecondOrder (order
+// >= 1.8 at 16 -> 32, which the method cannot give) are replaced by tests of
+// the documented behaviour: the stall itself (if a change lifts the 16 -> 32
+// order above 0.6, the cause documented here no longer holds: re-measure,
+// update the docs and restore the >= 1.8 test), and the identity that makes
+// 3rdorderBS share it (at 1 ppc, l = h/2: the linear hat convolved with a
+// box of width h is the quadratic B-spline, so the two runs agree to
+// round-off).
+TEST(MpmMmsConvergence, GimpOnePpcStallsAt16To32) {
+  const Study s = run_study("gimp");  // observed 2.6383e-3, 7.6560e-4, 6.9419e-4: orders 1.79, 0.14
+  EXPECT_GE(s.order(0), 1.6);
+  EXPECT_LT(s.order(1), 0.6);
 }
 
-TEST(MpmMmsConvergence, DISABLED_QuadraticBsplineSecondOrder) {
-  const Study s = run_study("3rdorderBS");
-  EXPECT_GE(s.order(1), 1.8);
+TEST(MpmMmsConvergence, QuadraticBsplineEqualsGimpAtOnePpc) {
+  Threads one(1);
+  for (int cells : {8, 16}) {
+    MmsRunOptions o;
+    o.cells = cells;
+    o.end_time = 0.005;
+    o.particles_per_cell_dir = 1;
+    o.interpolator = "gimp";
+    const double eg = run_axis_aligned(o).error;
+    o.interpolator = "3rdorderBS";
+    const double eb = run_axis_aligned(o).error;
+    std::printf("AA %2d^3, 1 ppc: gimp %.10e, 3rdorderBS %.10e\n", cells, eg, eb);
+    EXPECT_NEAR(eb, eg, 1e-9 * eg);
+  }
 }
 
 // cpGIMP (`<interpolator>cpgimp`, Tephra's name, InterpolatorKind::CpGimp)

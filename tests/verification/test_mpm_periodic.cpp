@@ -1,4 +1,5 @@
-// Periodic MPM (<periodic>, mpm/PeriodicGrid.h), linear interpolation.
+// Periodic MPM (<periodic>, mpm/PeriodicGrid.h), linear interpolation (the
+// wide stencils: test_mpm_periodic_wide.cpp).
 //  1. A block at uniform velocity in a fully periodic box translates through
 //     several box lengths: every particle at wrap(x0 + v t) (to round-off),
 //     momentum exactly conserved, no stress (l_p = 0 exactly: every node of a
@@ -134,14 +135,14 @@ TEST(MpmPeriodic, StandingWavePeriodIsLOverC) {
   EXPECT_NEAR(order, 2.0, 0.3);
 }
 
-TEST(MpmPeriodic, GimpIsAMissingFeature) {
+TEST(MpmPeriodic, CubicBsplineIsAMissingFeature) {  // boundary-modified splines: no periodic form
   const std::string grid =
       "<Box label=\"1\"><lower>[0,0,0]</lower><upper>[1,1,1]</upper><extraCells>[0,0,0]</extraCells>"
       "<patches>[1,1,1]</patches></Box><spacing>[0.25,0.25,0.25]</spacing><periodic>[1,0,0]</periodic>";
   std::string text = deck_text(grid, "<box label=\"b\"><min>[0,0,0]</min><max>[1,1,1]</max></box>", "[1,1,1]",
                                "[0,0,0]", 6e3, 3e3);
-  text.replace(text.find("linear"), 6, "gimp");
-  auto deck = load_deck_from_string(text, "periodic_gimp.ups", ".");
+  text.replace(text.find("linear"), 6, "4thorderBS");
+  auto deck = load_deck_from_string(text, "periodic_bs4.ups", ".");
   EXPECT_THROW(make_mpm_component(*deck), MissingFeature);
 }
 
