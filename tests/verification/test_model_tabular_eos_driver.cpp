@@ -15,6 +15,8 @@
 #include <fstream>
 #include <sstream>
 
+#include <Eigen/LU>
+
 #include "core/grid/Loop.h"
 #include "tests/support/PrescribedDriver.h"
 #include "tests/support/TestPaths.h"
