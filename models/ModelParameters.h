@@ -19,6 +19,11 @@ class ModelParameters {
   // A text value (trimmed), `fallback` when absent. Implementations without
   // text values (test maps) return the fallback.
   virtual std::string get_string(const std::string& /*name*/, const std::string& fallback) const { return fallback; }
+  // The text of parameter `name` read as a file path (tabular_eos <filename>): a
+  // relative path is taken beside the deck file when a file is there, else as
+  // given (the working directory), as <prescribed_deformation_file>. Without a
+  // deck (test maps) the text itself.
+  virtual std::string file_path(const std::string& name) const { return get_string(name, ""); }
   // Invalid value: throws (DeckError at the parameter's element).
   [[noreturn]] virtual void fail(const std::string& name, const std::string& message) const = 0;
   // Valid input that asks for something not implemented (MissingFeature).

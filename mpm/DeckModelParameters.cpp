@@ -1,5 +1,7 @@
 #include "mpm/DeckModelParameters.h"
 
+#include <filesystem>
+
 namespace tephra {
 
 const DeckNode& DeckModelParameters::at(const std::string& name) const {
@@ -31,6 +33,18 @@ std::string DeckModelParameters::get_string(const std::string& name, const std::
   used_.insert(name);
   const DeckNode* c = node_.child(name);
   return c ? c->text : fallback;
+}
+
+std::string DeckModelParameters::file_path(const std::string& name) const {
+  used_.insert(name);
+  const DeckNode* c = node_.child(name);
+  if (!c) return {};
+  const std::filesystem::path path(c->text);
+  if (path.is_relative()) {
+    const std::filesystem::path beside = std::filesystem::path(c->file).parent_path() / path;
+    if (std::filesystem::exists(beside)) return beside.string();
+  }
+  return c->text;
 }
 
 void DeckModelParameters::fail(const std::string& name, const std::string& message) const {

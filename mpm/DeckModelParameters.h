@@ -22,6 +22,7 @@ class DeckModelParameters final : public ModelParameters {
   double get_double(const std::string& name, double fallback) const override;
   bool get_bool(const std::string& name, bool fallback) const override;
   std::string get_string(const std::string& name, const std::string& fallback) const override;
+  std::string file_path(const std::string& name) const override;
   [[noreturn]] void fail(const std::string& name, const std::string& message) const override;
   [[noreturn]] void missing_feature(const std::string& name, const std::string& what) const override;
   const ModelParameters* block(const std::string& name) const override;

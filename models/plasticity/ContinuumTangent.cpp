@@ -15,12 +15,18 @@ Tangent4 j2i1_elastoplastic_tangent(double K, double mu, const Eigen::Matrix3d& 
 }
 
 Tangent4 yield_continuum_tangent(const YieldCondition& yield, const Eigen::Matrix3d& sigma, double sigma_y, double H_y,
-                                 double porosity, double K, double mu) {
+                                 double porosity, double K, double mu, const KinematicHardeningModel* kin,
+                                 const Eigen::Matrix3d& beta) {
   const Eigen::Matrix3d N = yield.gradient(sigma, sigma_y, porosity);
   const double h = 1e-6 * sigma_y;
   const double df_dsy = (yield.value(sigma, sigma_y + h, porosity) - yield.value(sigma, sigma_y - h, porosity)) / (2 * h);
   const double h_alpha = sigma.cwiseProduct(N).sum() / ((1.0 - porosity) * sigma_y);
-  return j2i1_elastoplastic_tangent(K, mu, N, -df_dsy * H_y * h_alpha);
+  double H_p = -df_dsy * H_y * h_alpha;
+  if (kin) {  // N : h^beta (header)
+    const Eigen::Matrix3d h_beta = 2.0 / 3.0 * kin->linear_modulus() * N - kin->recovery_modulus() * N.norm() * beta;
+    H_p += N.cwiseProduct(h_beta).sum();
+  }
+  return j2i1_elastoplastic_tangent(K, mu, N, H_p);
 }
 
 }  // namespace tephra

@@ -25,7 +25,11 @@ Tangent4 j2i1_elastoplastic_tangent(double K, double mu, const Eigen::Matrix3d& 
 // C^ep of `yield` at the stress `sigma` (on the surface f(σ, σ_y, φ) = 0), with the hardening
 // slope H_y = dσ_y/dε_p; ∂f/∂σ_y by a central difference of the yield function (relative step
 // 1e-6: the condition's interface gives f and ∂f/∂σ only).
+// With kinematic hardening `sigma` is the shifted stress ξ = σ - β and the plastic modulus gains
+// the backstress term N : h^β, h^β = (2/3) H_lin N - H_rec β |N| (VT 11.3 with d^p = γ̇ N, eq. 18.64):
+// ḟ = N : (σ̇ - β̇) + ... = 0.
 Tangent4 yield_continuum_tangent(const YieldCondition& yield, const Eigen::Matrix3d& sigma, double sigma_y, double H_y,
-                                 double porosity, double K, double mu);
+                                 double porosity, double K, double mu, const KinematicHardeningModel* kin = nullptr,
+                                 const Eigen::Matrix3d& beta = Eigen::Matrix3d::Zero());
 
 }  // namespace tephra

@@ -29,6 +29,7 @@
 #include "models/solid/PAlpha.h"  // solids-b
 #include "models/solid/PolarOrthotropicHypoElastic.h"  // solids-b
 #include "models/solid/ProgramBurn.h"  // solids-b
+#include "models/solid/TabularEos.h"  // solids (VT §22.2)
 #include "models/geo/CamClay.h"  // solids-geo
 #include "models/geo/MohrCoulomb.h"  // solids-geo
 
@@ -68,6 +69,7 @@ const std::map<std::string, Creator>& creators() {
       {"hypo_elastic_mms", &HypoElastic::create_mms},
       {"camclay", &CamClay::create},  // solids-geo (VT ch. 20)
       {"mohr_coulomb", &MohrCoulomb::create},  // solids-geo (VT ch. 19)
+      {"tabular_eos", &TabularEos::create},  // solids (VT §22.2)
   };
   return table;
 }

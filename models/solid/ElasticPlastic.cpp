@@ -210,24 +210,34 @@ bool ElasticPlastic::update_point(const Eigen::Matrix3d& F_old, const Eigen::Mat
       pr.dt = dt;
       pr.tolerance = std::max(p_.tolerance, 1e-11);
       pr.state = st;
-      if (yield_at(*yield_, q_trial, pr.I1_trial, pr.n_hat, y0.sigma_y, st.porosity) > 0.0) {
+      if (kin_) {  // yield on xi = sigma - beta (VT 18.64-18.70; PorousReturn.h)
+        pr.beta_n = Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(hist + k_beta_);
+        pr.H_lin = kin_->linear_modulus();
+        pr.H_rec = kin_->recovery_modulus();
+      }
+      const ShiftedTrial xt = shifted_trial(pr);
+      if (yield_at(*yield_, xt.q, xt.I1, xt.n_hat, y0.sigma_y, st.porosity) > 0.0) {
         plastic = true;
         const PorousReturnResult r = porous_return(*yield_, *flow_, pr);
         if (!r.converged) return false;
         delta = r.delta_eps_p;
         sigma_y = r.sigma_y;
-        s = r.stress - (r.I1 / 3.0) * I;
+        const double I1 = r.I1 + r.backstress.trace();  // tr sigma = tr xi + tr beta
+        s = r.stress - (I1 / 3.0) * I;
         tr_dp = r.plastic_strain.trace();
-        work = r.stress.cwiseProduct(r.plastic_strain).sum();  // sigma : Delta eps^p = (1 - phi) sigma_y Delta eps_p
+        // sigma : Delta eps^p (= (1 - phi) sigma_y Delta eps_p + beta : Delta eps^p with a backstress)
+        work = r.stress.cwiseProduct(r.plastic_strain).sum();
         T_new = T + c * work;
+        if (kin_) Eigen::Map<Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(hist + k_beta_) = r.backstress;
         if (has_stability_check(failure_)) {  // the J2-I1 continuum tangent (VT §18.6.2) at the returned state
           porous_dp = r.plastic_strain;
-          porous_tangent = yield_continuum_tangent(*yield_, r.stress, r.sigma_y, r.hardening, st.porosity, kappa, mu);
+          porous_tangent = yield_continuum_tangent(*yield_, r.xi, r.sigma_y, r.hardening, st.porosity, kappa, mu,
+                                                   kin_.get(), r.backstress);
         }
         hist[k_evp_] += tr_dp;
         if (k_sigma_e_ >= 0) hist[k_sigma_e_] = r.sigma_e;  // MTS: sigma_e of the return (PorousReturn.h)
         if (eos_->type() == "default_hypo") {
-          p_mech = r.I1 / 3.0 + 3.0 * kappa * p_.alpha * (T - T0);  // p_tr - kappa tr(Delta eps^p)
+          p_mech = I1 / 3.0 + 3.0 * kappa * p_.alpha * (T - T0);  // p_tr - kappa tr(Delta eps^p)
         } else {
           EosInput e2 = ei;
           e2.J = J * std::exp(-hist[k_evp_]);
@@ -382,10 +392,7 @@ ConstitutiveModelP ElasticPlastic::create(const ModelParameters& params) {
                              [](const std::string& kk, const ModelParameters& q, const SubModelContext& cc) {
                                return create_kinematic_hardening_model(kk, q, cc);
                              });
-  if (kin->type() != "none") {
-    if (m->yield_)
-      params.missing_feature("kinematic_hardening_model",
-                             name + " kinematic hardening with yield_condition '" + yield->type() + "' (von Mises only)");
+  if (kin->type() != "none") {  // with a porous yield too: the shifted two-invariant return (PorousReturn.h)
     m->kin_ = kin;
     m->k_beta_ = k++;
   }

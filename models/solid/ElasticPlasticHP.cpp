@@ -121,23 +121,32 @@ bool ElasticPlasticHP::update_point(const Eigen::Matrix3d& F_old, const Eigen::M
     pr.dt = dt;
     pr.tolerance = std::max(p_.tolerance, 1e-11);
     pr.state = st;
+    if (kin_) {  // yield on ξ = σ - β (VT 18.64-18.70; PorousReturn.h)
+      pr.beta_n = Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(hist + k_beta_);
+      pr.H_lin = kin_->linear_modulus();
+      pr.H_rec = kin_->recovery_modulus();
+    }
     const FlowStress y0 = flow_->evaluate(st);
-    if (yield_at(*yield_, q_trial, pr.I1_trial, pr.n_hat, y0.sigma_y, st.porosity) > 0.0) {
+    const ShiftedTrial xt = shifted_trial(pr);
+    if (yield_at(*yield_, xt.q, xt.I1, xt.n_hat, y0.sigma_y, st.porosity) > 0.0) {
       const PorousReturnResult r = porous_return(*yield_, *flow_, pr);
       if (!r.converged) return false;
       delta = r.delta_eps_p;
-      s = r.stress - (r.I1 / 3.0) * I;
+      const double I1 = r.I1 + r.backstress.trace();  // tr σ = tr ξ + tr β
+      s = r.stress - (I1 / 3.0) * I;
       tr_dp = r.plastic_strain.trace();
-      work = r.stress.cwiseProduct(r.plastic_strain).sum();  // σ : Δε^p = (1 - φ) σ_y Δε_p
+      work = r.stress.cwiseProduct(r.plastic_strain).sum();  // σ : Δε^p = (1 - φ) σ_y Δε_p (+ β : Δε^p)
+      if (kin_) Eigen::Map<Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(hist + k_beta_) = r.backstress;
       if (has_stability_check(failure_)) {  // the J2-I1 continuum tangent (VT §18.6.2) at the returned state
         porous_dp = r.plastic_strain;
-        porous_tangent = yield_continuum_tangent(*yield_, r.stress, r.sigma_y, r.hardening, st.porosity, pr.K, mu);
+        porous_tangent = yield_continuum_tangent(*yield_, r.xi, r.sigma_y, r.hardening, st.porosity, pr.K, mu,
+                                                 kin_.get(), r.backstress);
       }
       hist[k_evp_] += tr_dp;
       if (k_sigma_e_ >= 0) hist[k_sigma_e_] = r.sigma_e;  // MTS: sigma_e of the return (PorousReturn.h)
       // Mean stress: exact for the rate form (p_tr - K tr Δε^p); others at the new J^e.
       ei.J = J * std::exp(-hist[k_evp_]);
-      mean = eos_->type() == "default_hypo" ? r.I1 / 3.0 : eos_->evaluate(ei).p - p_th;
+      mean = eos_->type() == "default_hypo" ? I1 / 3.0 : eos_->evaluate(ei).p - p_th;
     }
   } else if (dt > 0.0 && mu > 0.0) {
     // Von Mises return on ξ = s - β (header comment; β = 0 without kinematic hardening).
@@ -317,10 +326,7 @@ ConstitutiveModelP ElasticPlasticHP::create(const ModelParameters& params) {
                                        });
   // MTS: the structure stress sigma_e is a scalar history column (before the backstress).
   if (m->flow_->type() == "mechanical_threshold_stress") m->k_sigma_e_ = k++;
-  if (kin->type() != "none") {
-    if (m->yield_)
-      params.missing_feature("kinematic_hardening_model", "elastic_plastic_hp kinematic hardening with yield_condition '" +
-                                                              yield->type() + "' (von Mises only)");
+  if (kin->type() != "none") {  // with a porous yield too: the shifted two-invariant return (PorousReturn.h)
     m->kin_ = kin;
     m->k_beta_ = k++;
   }

@@ -14,13 +14,14 @@ namespace tephra {
 
 SolidPointResult hypo_elastic_point(const Eigen::Matrix3d& F_old, const Eigen::Matrix3d& F_new,
                                     const Eigen::Matrix3d& stress_old, double density0,
-                                    const HypoElasticParams& p) {
+                                    const HypoElasticParams& p, double thermal_strain) {
   const Eigen::Matrix3d I = Eigen::Matrix3d::Identity();
   // Newton polar decomposition (PolarNewton.h): the eigen-solve result to round-off, faster.
   const PolarDecomposition a = polar_decomposition_newton(F_old), b = polar_decomposition_newton(F_new);
   // Unrotated strain increment: midpoint rule for d_hat = sym(U_dot U^{-1}).
   const Eigen::Matrix3d G = (b.U - a.U) * (0.5 * (a.U + b.U)).inverse();
-  const Eigen::Matrix3d de = 0.5 * (G + G.transpose());
+  // Mechanical part: minus the thermal strain increment alpha (T_{n+1} - T_n) I (header).
+  const Eigen::Matrix3d de = 0.5 * (G + G.transpose()) - thermal_strain * I;
   // VT eq. 4.2 in the unrotated frame.
   const Eigen::Matrix3d tau =
       a.R.transpose() * stress_old * a.R + ((p.K - 2.0 * p.G / 3.0) * de.trace()) * I + (2.0 * p.G) * de;
@@ -35,11 +36,26 @@ SolidPointResult hypo_elastic_point(const Eigen::Matrix3d& F_old, const Eigen::M
   return r;
 }
 
+std::vector<HistoryVariable> HypoElastic::history() const {
+  if (p_.alpha == 0.0) return {};
+  return {{"lastTemperature", 1, {0.0}, "temperature of the last update (thermal strain alpha (T - T_last)) [K]"}};
+}
+
 long HypoElastic::update(const SolidUpdateInput& in, const SolidUpdateOutput& out) const {
   return for_each_point(in.F_new.size(), [&](size_t i) {
     const double J0 = in.F_old[i].determinant(), J = in.F_new[i].determinant();
     if (!(J0 > 0.0) || !(J > 0.0) || !std::isfinite(J) || !std::isfinite(J0)) return false;
-    const SolidPointResult r = hypo_elastic_point(in.F_old[i], in.F_new[i], in.stress_old[i], in.density0, p_);
+    double thermal_strain = 0.0;
+    if (p_.alpha != 0.0) {
+      const double T = in.temperature[i];
+      if (!std::isfinite(T)) return false;
+      double& T_last = out.history[0][i];
+      if (!(T_last > 0.0)) T_last = T;  // the first update: the reference temperature
+      thermal_strain = p_.alpha * (T - T_last);
+      T_last = T;
+    }
+    const SolidPointResult r =
+        hypo_elastic_point(in.F_old[i], in.F_new[i], in.stress_old[i], in.density0, p_, thermal_strain);
     if (!r.stress.allFinite()) return false;
     out.stress[i] = r.stress;
     out.wave_speed[i] = r.wave_speed;
@@ -70,8 +86,11 @@ ConstitutiveModelP HypoElastic::create_named(const ModelParameters& params, cons
   p.K = params.get_double("K");
   if (!(p.G > 0.0)) params.fail("G", "G (shear modulus) must be > 0");
   if (!(p.K > 0.0)) params.fail("K", "K (bulk modulus) must be > 0");
-  if (params.get_double("alpha", 0.0) != 0.0)
+  p.alpha = params.get_double("alpha", 0.0);
+  if (type == "hypo_elastic_mms" && p.alpha != 0.0)  // the manufactured solutions are isothermal
     params.missing_feature("alpha", type + " thermal stress (alpha != 0)");
+  if (!std::isfinite(p.alpha)) params.fail("alpha", "alpha (thermal expansion) must be finite");
+  if (!params.mpm_flag("DoThermalExpansion", true)) p.alpha = 0.0;  // the MPM flag (header)
   return std::make_shared<HypoElastic>(p, type);
 }
 

@@ -29,8 +29,17 @@
 // stress, W = J [ p^2/(2K) + s:s/(4G) ], p = tr(sigma)/3, s = dev(sigma)
 // (Vaango sums the work rate sigma:d instead; W equals that integral for a
 // proportional small-strain path).
-// Parameters (Vaango names): <G>, <K> [Pa] required; <alpha> (thermal expansion,
-// default 0) only 0 (thermal strain needs a temperature rate: MissingFeature).
+// Parameters (Vaango names): <G>, <K> [Pa] required; <alpha> [1/K] (linear thermal
+// expansion, default 0).
+//
+// Thermal strain (Vaango HypoElastic: D = sym(l) - alpha T_dot I, T_dot = (T - T_prev)/dt):
+// the mechanical increment is de - alpha (T_{n+1} - T_n) I, T_n the temperature of the
+// point's last update (history "lastTemperature", declared only when alpha != 0, set to the
+// first temperature seen). So free heating with F = exp(alpha (T - T_0)) I is stress-free
+// (to the midpoint rule's O(dt^3) per step), and constrained heating (F = I) gives the
+// pressure sigma = -3 K alpha (T - T_0) I exactly. <DoThermalExpansion> false in <MPM> sets
+// alpha = 0 (departure: Vaango's HypoElastic does not read that flag; its ElasticPlastic and
+// ViscoScram do -- Tephra treats the flag as the switch it is named).
 #include <string>
 #include <utility>
 
@@ -43,12 +52,14 @@ namespace tephra {
 struct HypoElasticParams {
   double G = 0.0;  // shear modulus [Pa]
   double K = 0.0;  // bulk modulus [Pa]
+  double alpha = 0.0;  // linear thermal expansion coefficient [1/K]
 };
 
 // The point function. Precondition: det F_old > 0 and det F_new > 0.
+// thermal_strain: alpha (T_{n+1} - T_n), subtracted from the volumetric increment.
 SolidPointResult hypo_elastic_point(const Eigen::Matrix3d& F_old, const Eigen::Matrix3d& F_new,
                                     const Eigen::Matrix3d& stress_old, double density0,
-                                    const HypoElasticParams& p);
+                                    const HypoElasticParams& p, double thermal_strain = 0.0);
 
 class HypoElastic final : public ConstitutiveModel {
  public:
@@ -62,6 +73,7 @@ class HypoElastic final : public ConstitutiveModel {
 
   std::string type() const override { return type_; }
   long update(const SolidUpdateInput& in, const SolidUpdateOutput& out) const override;
+  std::vector<HistoryVariable> history() const override;
   double bulk_modulus() const override { return p_.K; }
   double shear_modulus() const override { return p_.G; }
   // Vaango HypoElastic::computePressEOSCM: p = K (1 - rho0/rho), dp/drho = K rho0/rho^2,

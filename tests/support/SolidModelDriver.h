@@ -14,6 +14,7 @@
 
 #include "models/ModelParameters.h"
 #include "models/solid/ConstitutiveModel.h"
+#include "tests/support/TestPaths.h"
 
 namespace tephra::test {
 
@@ -150,6 +151,11 @@ inline const std::map<std::string, std::map<std::string, double>>& sample_solid_
       // Mohr-Coulomb (classic): K = 8 GPa, G = 3 GPa, c = 10 MPa, phi = 30, psi = 10 degrees (blocks
       // in add_sample_blocks): elastic below shear strains ~1e-3, plastic on the contracts' large paths.
       {"mohr_coulomb", {}},
+      // Tabular EOS (solids, VT §22.2): tests/support/tabular_eos_sample.json (file names in
+      // add_sample_blocks), slopes 4, 6, 8, 12, 20 GPa; K = dp/deta = 8 GPa on [0.95, 1.05], p(1) = 0,
+      // so the small-strain contract and the hooks' central differences at x = 0.9, 1, 1.1 stay
+      // inside one segment.
+      {"tabular_eos", {}},
   };
   return table;
 }
@@ -165,6 +171,12 @@ inline void add_sample_blocks(const std::string& type, MapModelParameters& p) {
     p.strings["symmetry_axis_bottom"] = "[0, 0, 0]";
   }
   if (type == "program_burn") p.strings["starting_location"] = "[1e5, 0, 0]";
+  if (type == "tabular_eos") {
+    p.strings["filename"] = source_dir() + "/tests/support/tabular_eos_sample.json";
+    p.strings["independent_variables"] = "DensityRatio";
+    p.strings["dependent_variables"] = "Pressure";
+    p.add_block("interpolation", "linear");
+  }
   if (type == "p_alpha") p.enclosing = {{"density", 7800.0}, {"specific_heat", 450.0}};
   if (type == "visco_plastic") {
     p.add_block("viscoplastic_flow_model", "suvic_i", {{"initial_yield", 1.0e9}, {"initial_drag", 1.0e9}});

@@ -347,7 +347,7 @@ TEST(ElasticPlastic, UnimplementedOptionsAreMissingFeaturesAndBadInputFails) {
   k.add_block("kinematic_hardening_model", "prager", {{"hardening_modulus", 1e9}});
   EXPECT_FALSE(is_missing_feature(k));
   k.add_block("yield_condition", "gurson", {{"q1", 1.5}, {"q2", 1.0}, {"q3", 2.25}, {"k", 4.0}, {"f_c", 0.05}});
-  EXPECT_TRUE(is_missing_feature(k));  // ... not with a porous yield (the two-invariant return has no backstress)
+  EXPECT_FALSE(is_missing_feature(k));  // ... and with a porous yield (test_plasticity_porous_kinematic)
   auto st = linear_parameters(0);
   st.add_block("stability_check", "no_such_check");
   EXPECT_THROW(create_constitutive_model("elastic_plastic", st), std::invalid_argument);
