@@ -10,12 +10,13 @@ Prints the worst relative difference; exit 1 on a mismatch.
 """
 import glob
 import os
+import re
 import sys
 
 
 def numbers(text):
     out = []
-    for tok in text.split():
+    for tok in re.split(r"[\s,]+", text.strip()):
         try:
             out.append(float(tok))
         except ValueError:

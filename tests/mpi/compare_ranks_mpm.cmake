@@ -2,7 +2,7 @@
 # gives the 1-rank answer to round-off, and restarts across rank counts
 # continue it.
 #   DECK: disks.ups (decks README A1) cut into patches [2,1,1] (the cut at
-#   x = 0.5 is crossed by the disks' particles), gimp, checkpoints every 0.5 s.
+#   x = 0.5 is crossed by the disks' particles), gimp, checkpoints every 0.7 s (the last at t = 2.8, so a restart runs the last ~0.2 s).
 #   1. tephra DECK -> np1; mpirun -np 2 tephra DECK -> np2.
 #   2. Restart 2 -> 1 (a copy of np2 by one process) and 1 -> 2 (a copy of
 #      np1 by mpirun -np 2) from the checkpoint before the end.
@@ -47,7 +47,7 @@ file(READ ${DECK_IN} deck)
 string(REGEX REPLACE "<patches>[^<]*</patches>" "<patches>[2,1,1]</patches>" deck "${deck}")
 string(REGEX REPLACE "<extraCells>[^<]*</extraCells>" "<extraCells>[1,1,1]</extraCells>" deck "${deck}")
 string(REGEX REPLACE "<interpolator>[^<]*</interpolator>" "<interpolator>gimp</interpolator>" deck "${deck}")
-string(REGEX REPLACE "<checkpoint[^>]*/>" "<checkpoint cycle=\"2\" interval=\"0.5\"/>" deck "${deck}")
+string(REGEX REPLACE "<checkpoint[^>]*/>" "<checkpoint cycle=\"2\" interval=\"0.7\"/>" deck "${deck}")
 string(REGEX REPLACE "<outputInterval>[^<]*</outputInterval>" "<outputInterval>0.1</outputInterval>" deck "${deck}")
 file(WRITE ${WORK}/disks2.ups "${deck}")
 
