@@ -124,7 +124,7 @@ void MpmComponent::size_step_columns(MpmMaterial& m) {
 void MpmComponent::lay_out_patches() {
   if (laid_out_) return;
   laid_out_ = true;
-  if (keep_whole_level_) {
+  if (keep_whole_level_ || launched_rank_count() <= 1) {  // one process: every patch here, nothing counted
     layout_ = PatchLayout::whole(setup_.grid);
     return;
   }
