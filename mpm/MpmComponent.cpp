@@ -68,6 +68,10 @@ void MpmComponent::initialize() {
       for (std::size_t i = 0; i < m.particles.size(); ++i) column.insert(column.end(), h.initial.begin(), h.initial.end());
       m.particles.history.push_back(std::move(column));
     }
+  }
+  // Under mpirun: patches to ranks, each rank keeps the particles of its patches (mpm/MpmRanks.cpp).
+  lay_out_patches();
+  for (MpmMaterial& m : setup_.materials) {
     // <initialize_stress_using_body_force>: sigma, F and V of eqs. (1), (2) of mpm/loads/BodyForceStress.h.
     if (setup_.flags.initialize_stress_using_body_force && m.body_force_surface)
       initialize_stress_from_body_force(m.density, setup_.gravity, *m.body_force_surface, m.model->bulk_modulus(),
@@ -77,6 +81,7 @@ void MpmComponent::initialize() {
     update_stress(m, 0, 0.0);  // sigma(F = I) = 0, and the initial wave speeds
   }
   apply_loads(0.0);
+  set_node_boxes();
   for (MpmMaterial& m : setup_.materials) project_to_grid(m, 0, "initialize");  // g.* fields of the initial state
   // The first step's size from the initial state (Vaango: the constitutive
   // model's computeStableTimestep at initialization, c(F = I) and v_0).
@@ -105,7 +110,7 @@ double MpmComponent::material_stable_timestep(const MpmMaterial& m) const {
 #pragma omp parallel for schedule(static) reduction(min : dt) if (np >= 4096)
   for (long i = 0; i < np; ++i)
     for (int d = 0; d < 3; ++d) dt = std::min(dt, dx[d] / (p.wave_speed[i] + std::abs(p.v[i][d])));
-  return dt;
+  return layout_.min(dt);  // over the MPI ranks (exact: every rank gets the one-process value)
 }
 
 // The step size computed by the last stress update (initialize() or advance()).
@@ -153,6 +158,7 @@ void MpmComponent::interpolate_to_grid(MpmMaterial& m, int step, const char* pha
   if (!axis_form && setup_.flags.axisymmetric) order_scatter(m.grid, m.stencils);
   m.grid.reset();
   particles_to_grid(m.particles, m.stencils, setup_.gravity, m.grid);
+  sum_particles_to_grid(m.grid);  // over the MPI ranks (mpm/MpmRanks.cpp; no-op in one process)
   fold_particle_sums(periodic_, m.grid);  // periodic aliases share the sums
   // Symmetry faces as mirrors: extra-cell sums onto their mirror nodes (mpm/SymmetryFold.h;
   // not for axisymmetric runs, whose r = 0 axis is not a plane mirror of the weights).
@@ -185,6 +191,7 @@ void MpmComponent::project_to_grid(MpmMaterial& m, int step, const char* phase) 
 void MpmComponent::internal_force(MpmMaterial& m) {
   if (setup_.flags.axisymmetric) axisymmetric_internal_force(m.particles, m.stencils, m.grid);
   else compute_internal_force(m.particles, m.stencils, m.grid);
+  sum_node_vectors(m.grid.internal_force);  // over the MPI ranks
   fold_internal_force(periodic_, m.grid);
   if (!setup_.flags.axisymmetric) fold_symmetry_internal_force(m.bcs, m.grid);
 }
@@ -273,6 +280,9 @@ void MpmComponent::exchange_momentum(ContactStage stage, double t, double dt) {
     for (std::size_t i = 0; i < c.gradient.size(); ++i) mass_gradient(mats[i].particles, mats[i].stencils, mats[i].grid, c.gradient[i]);
     for (std::size_t i = 0; i < c.position.size(); ++i)
       mass_weighted_position(mats[i].particles, mats[i].stencils, mats[i].grid, c.position[i]);
+    // Over the MPI ranks: both divide by the global m_g already, so the per-rank results add.
+    for (std::vector<Vec3>& n : c.gradient) sum_node_vectors(n);
+    for (std::vector<Vec3>& n : c.position) sum_node_vectors(n);
     p2g_velocity_.resize(mats.size());
     for (std::size_t i = 0; i < mats.size(); ++i) p2g_velocity_[i] = mats[i].grid.velocity;
     if (!model.acts_on(stage)) return;
@@ -290,15 +300,25 @@ void MpmComponent::exchange_momentum(ContactStage stage, double t, double dt) {
 // inward normal; e.g. on z- a compressed body gives +|sigma_zz| A), and
 // BndyContactArea = sum V_g / h_d over the same nodes (d the face normal).
 void MpmComponent::boundary_forces() {
+  // On MPI ranks every rank sums whole-grid copies of f_int and V_g (the same
+  // nodes in the same order as one process).
+  std::vector<std::vector<double>> whole_force, whole_volume;
+  if (layout_.distributed && !setup_.flags.boundary_traction_faces.empty())
+    for (const MpmMaterial& m : setup_.materials) {
+      whole_force.push_back(node_sums_.whole(m.grid.internal_force.front().data(), 3));
+      whole_volume.push_back(node_sums_.whole(m.grid.volume.data(), 1));
+    }
   for (int f : setup_.flags.boundary_traction_faces) {
     const int d = f / 2;
     Vec3 force = Vec3::Zero();
     double area = 0.0;
-    for (const MpmMaterial& m : setup_.materials) {
+    for (std::size_t mi = 0; mi < setup_.materials.size(); ++mi) {
       // The domain's face nodes (Vaango's Patch::FaceNodes): the node plane
       // extra or n - 1 - extra, over the interior nodes of the other two
       // directions (not the extra-cell nodes that GIMP/CPDI/B-splines reach).
-      const NodeGrid& g = m.grid;
+      const NodeGrid& g = setup_.materials[mi].grid;
+      const double* fint = whole_force.empty() ? g.internal_force.front().data() : whole_force[mi].data();
+      const double* vol = whole_volume.empty() ? g.volume.data() : whole_volume[mi].data();
       const int plane = (f % 2 == 0) ? g.extra[d] : g.n[d] - 1 - g.extra[d];
       const int a = (d + 1) % 3, b = (d + 2) % 3;
       IntVec3 c;
@@ -306,8 +326,8 @@ void MpmComponent::boundary_forces() {
       for (c[b] = g.extra[b]; c[b] < g.n[b] - g.extra[b]; ++c[b])
         for (c[a] = g.extra[a]; c[a] < g.n[a] - g.extra[a]; ++c[a]) {
           const std::size_t gi = g.index(c);
-          force -= g.internal_force[gi];
-          area += g.volume[gi] / g.h[d];
+          force -= Vec3(fint[3 * gi], fint[3 * gi + 1], fint[3 * gi + 2]);
+          area += vol[gi] / g.h[d];
         }
     }
     boundary_force_[f] = force;
@@ -357,6 +377,8 @@ void MpmComponent::advance(double t, double dt, int step) {
   const bool velocity_surfaces = !setup_.loads.velocity.empty();
   if (velocity_surfaces) prescribe_surface_velocities(t);
   // 1-3. Body force (gravity) and external loads enter P2G: m_g, V_g, v_g, f_ext,g (Alg. 5, eq. 1.69).
+  //      On MPI ranks: first the node boxes the node sums combine over (mpm/MpmRanks.cpp).
+  set_node_boxes();
   for (MpmMaterial& m : mats) interpolate_to_grid(m, step, "interpolate particles to grid", true);
   if (velocity_surfaces) find_surface_velocity_nodes(t);  // v_g = v(t_n) at the nodes they reach
   // MPMICE steps 1-6: node -> cell, equilibration, face velocities, pressure (mpmice/).
@@ -435,6 +457,7 @@ void MpmComponent::advance(double t, double dt, int step) {
           updated_particle_grid_velocity(m.particles, m.stencils, m.grid, dt,
                                          periodic_.active() ? &periodic_.canonical : nullptr, musl_velocity_[i]);
         }
+        sum_node_vectors(musl_velocity_[i]);  // over the MPI ranks (divided by the global m_g already)
         if (!setup_.flags.axisymmetric) fold_symmetry_velocity(m.bcs, m.grid, musl_velocity_[i]);
         m.bcs.apply(m.grid, musl_velocity_[i]);
         copy_from_canonical(periodic_, musl_velocity_[i]);
@@ -469,10 +492,10 @@ void MpmComponent::advance(double t, double dt, int step) {
   //     AccStrainEnergy += sum V0 (P_n + P_{n+1})/2 : (F_{n+1} - F_n) (mpm/StrainWork.h).
   for (MpmMaterial& m : mats) {
     const bool work = setup_.accumulate_strain_energy;
-    if (work) acc_strain_energy_ += 0.5 * piola_work(m.particles, m.F_old, m.F_old);  // sigma_n at F_n
+    if (work) acc_strain_energy_ += 0.5 * sum_over_ranks(piola_work(m.particles, m.F_old, m.F_old));  // sigma_n at F_n
     update_stress(m, step, dt);
-    plastic_work_ += plastic_work_of_step(m.particles, m.plastic_work);  // PlasticWork (mpm/StrainWork.h)
-    if (work) acc_strain_energy_ += 0.5 * piola_work(m.particles, m.particles.F, m.F_old);  // sigma_{n+1} at F_{n+1}
+    plastic_work_ += sum_over_ranks(plastic_work_of_step(m.particles, m.plastic_work));  // PlasticWork (mpm/StrainWork.h)
+    if (work) acc_strain_energy_ += 0.5 * sum_over_ranks(piola_work(m.particles, m.particles.F, m.F_old));  // sigma_{n+1} at F_{n+1}
     stable_dt_ = std::min(stable_dt_, material_stable_timestep(m));
   }
   stable_dt_ = std::min(stable_dt_, thermal_stable_timestep());
@@ -510,6 +533,8 @@ void MpmComponent::advance(double t, double dt, int step) {
       delete_particles(m, v_old.empty() ? p.v : v_old, step);  // Vaango's limits (mpm/ParticleDeletion.h)
     }
   }
+  // On MPI ranks: particles that entered another rank's patch move there (mpm/MpmRanks.cpp).
+  migrate_particles();
   time_ = t + dt;
 }
 

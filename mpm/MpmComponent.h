@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "core/grid/Grid.h"
+#include "core/parallel/PatchLayout.h"
 #include "core/sim/Component.h"
 #include "models/solid/ConstitutiveModel.h"
 #include "mpm/GridBoundaryConditions.h"
@@ -19,6 +20,7 @@
 #include "mpm/NodeGrid.h"
 #include "mpm/PrescribedDeformation.h"
 #include "mpm/ParticleSeeding.h"
+#include "mpm/RankNodeSums.h"
 #include "mpm/PeriodicGrid.h"
 #include "mpm/Particles.h"
 #include "mpm/contact/ContactModel.h"
@@ -108,6 +110,12 @@ class MpmComponent final : public Component {
   void set_particle_reordering(bool on) { setup_.reorder_particles = on; }
   // MPMICE: the coupled component's hooks into advance() (null: plain MPM).
   void set_coupling(MpmCoupling* coupling) { coupling_ = coupling; }
+  // MPI ranks (mpm/MpmRanks.cpp): which patches this process holds. Under
+  // mpirun the patches are spread over the ranks at initialize() (or
+  // load_state()); keep_whole_level() before that keeps them all here (the
+  // 1-rank reference inside an MPI test).
+  void keep_whole_level() { keep_whole_level_ = true; }
+  const PatchLayout& layout() const { return layout_; }
 
  private:
   double material_stable_timestep(const MpmMaterial& m) const;
@@ -140,6 +148,21 @@ class MpmComponent final : public Component {
   void check_temperatures(const MpmMaterial& m, int step) const;  // <test_for_neg_temps_mpm> (same file)
   [[noreturn]] void fail_particle(const MpmMaterial& m, std::size_t i, int step, const std::string& phase,
                                   const std::string& what) const;
+  // MPI ranks (mpm/MpmRanks.cpp; all no-ops unless layout_.distributed).
+  void lay_out_patches();                  // layout_ from the seeded particles, keep the own ones
+  void check_rank_support() const;         // MissingFeature for what does not run on ranks yet
+  int patch_of(const Vec3& x) const;       // level patch holding x (nearest interior cell)
+  void keep_own_particles(MpmMaterial& m);
+  void size_step_columns(MpmMaterial& m);  // L, F_old, plastic_work, heating to the particle count
+  void set_node_boxes();                   // this step's node boxes of all ranks (a collective)
+  void sum_particles_to_grid(NodeGrid& g); // P2G arrays over the ranks (mpm/RankNodeSums.h)
+  void sum_node_vectors(std::vector<Vec3>& v);
+  void sum_node_doubles(std::vector<double>& v);
+  double sum_over_ranks(double local) const;  // in rank order, the same bits on every rank
+  void migrate_particles();                // particles to the ranks owning their new patches
+  PatchLayout layout_;
+  RankNodeSums node_sums_;
+  bool keep_whole_level_ = false, laid_out_ = false;
   MpmSetup setup_;
   // Stable step for the next advance(), set by the last stress update from
   // c(F_{n+1}) and v_n (Vaango's order); part of the restart state.

@@ -5,6 +5,8 @@
 
 #include <algorithm>
 
+#include "core/parallel/Ranks.h"
+
 namespace tephra {
 
 namespace {
@@ -110,6 +112,18 @@ void sort_by_id(ParticleBlock& b) {
     if (f.values.size() == n * std::size_t(f.components)) gather(f.values, std::size_t(f.components));
 }
 
+// On MPI ranks: every rank's particles of the block, concatenated in rank
+// order (sort_by_id then puts them in id order, as one process writes them).
+void gather_block(ParticleBlock& b) {
+  std::vector<double> x = flatten(b.position), id(b.id.begin(), b.id.end());  // ids < 2^53: exact
+  x = all_gather(x);
+  id = all_gather(id);
+  b.position.resize(x.size() / 3);
+  for (std::size_t i = 0; i < b.position.size(); ++i) take(x.data() + 3 * i, b.position[i]);
+  b.id.assign(id.begin(), id.end());
+  for (FieldArray& f : b.fields) f.values = all_gather(f.values);
+}
+
 std::string prefix(const MpmMaterial& m) { return "mpm.m" + std::to_string(m.index) + "."; }
 
 // Vaango's face names in the BndyForce_<face> / BndyContactArea_<face> labels.
@@ -167,6 +181,7 @@ void MpmComponent::fill_output(const std::set<std::string>& labels, OutputFrame&
       f.values = p.history[k];
       b.fields.push_back(std::move(f));
     }
+    if (layout_.distributed) gather_block(b);  // every rank's particles (mpm/MpmRanks.cpp)
     sort_by_id(b);
     frame.particles.push_back(std::move(b));
 
@@ -185,6 +200,10 @@ void MpmComponent::fill_output(const std::set<std::string>& labels, OutputFrame&
         for (std::size_t n : kept) cropped.push_back(column[n]);
         gf.data = field(label, m.index, cropped);
       }
+      // On MPI ranks each node from a rank whose box holds it (mpm/RankNodeSums.h).
+      // Periodic grids (ghost layers cropped above) are not run on ranks (exit 3).
+      if (layout_.distributed && !column.empty())
+        gf.data.values = node_sums_.whole(gf.data.values.data(), gf.data.components);
       frame.grid_fields.push_back(std::move(gf));
     };
     node("g.mass", g.mass);
@@ -216,6 +235,20 @@ std::map<std::string, std::vector<double>> MpmComponent::reductions(const std::s
       mx += p.mass[i] * p.x[i];
     }
   }
+  double thermal = 0.0;  // ThermalEnergy = sum m_p c_v T_p (below)
+  if (labels.count("ThermalEnergy"))
+    for (const MpmMaterial& m : setup_.materials)
+      for (std::size_t i = 0; i < m.particles.size(); ++i)
+        thermal += m.particles.mass[i] * m.specific_heat * m.particles.temperature[i];
+  if (layout_.distributed) {
+    // On MPI ranks: each rank's partial sums added in rank order (the same
+    // bits on every rank; against one process the order of the terms differs).
+    const std::vector<double> total = layout_.ordered_sum(
+        {PatchPartial{world_ranks().rank, {ke, se, mass, mom[0], mom[1], mom[2], mx[0], mx[1], mx[2], thermal}}}, 10);
+    ke = total[0], se = total[1], mass = total[2], thermal = total[9];
+    mom = Vec3(total[3], total[4], total[5]);
+    mx = Vec3(total[6], total[7], total[8]);
+  }
   std::map<std::string, std::vector<double>> out;
   if (labels.count("KineticEnergy")) out["KineticEnergy"] = {ke};
   if (labels.count("StrainEnergy")) out["StrainEnergy"] = {se};
@@ -229,13 +262,7 @@ std::map<std::string, std::vector<double>> MpmComponent::reductions(const std::s
   // (a Tephra label: Vaango computes this error in post-processing scripts).
   // ThermalEnergy = sum m_p c_v T_p (Vaango's definition, c_v the material's
   // <specific_heat>), summed only when the deck saves it.
-  if (labels.count("ThermalEnergy")) {
-    double thermal = 0.0;
-    for (const MpmMaterial& m : setup_.materials)
-      for (std::size_t i = 0; i < m.particles.size(); ++i)
-        thermal += m.particles.mass[i] * m.specific_heat * m.particles.temperature[i];
-    out["ThermalEnergy"] = {thermal};
-  }
+  if (labels.count("ThermalEnergy")) out["ThermalEnergy"] = {thermal};
   if (labels.count("MMSDisplacementErrorL2")) out["MMSDisplacementErrorL2"] = {mms_displacement_error()};
   if (labels.count("CenterOfMassPosition")) {
     const Vec3 c = mass > 0 ? Vec3(mx / mass) : Vec3::Zero();
@@ -255,13 +282,55 @@ std::map<std::string, std::vector<double>> MpmComponent::reductions(const std::s
   return out;
 }
 
+// On MPI ranks: the particles of every rank in ascending id (a checkpoint
+// that any rank count can read) and whole-grid node arrays (mpm/RankNodeSums.h).
+void gather_for_checkpoint(const RankNodeSums& sums, const std::vector<HistoryVariable>& hist, Particles& p,
+                           NodeGrid& g) {
+  std::vector<double> ids(p.id.begin(), p.id.end());
+  ids = all_gather(ids);
+  std::vector<std::size_t> order(ids.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::sort(order.begin(), order.end(), [&](std::size_t x, std::size_t y) { return ids[x] < ids[y]; });
+  for_each_column(p, g, [&](const char* name, auto& col) {
+    using T = typename std::decay_t<decltype(col)>::value_type;
+    constexpr int k = std::is_same_v<T, double> ? 1 : (std::is_same_v<T, Vec3> ? 3 : 9);
+    if (name[0] == 'g') {
+      if (col.empty()) return;
+      const std::vector<double> w = sums.whole(flatten(col).data(), k);
+      for (std::size_t i = 0; i < col.size(); ++i) take(w.data() + k * i, col[i]);
+      return;
+    }
+    const std::vector<double> flat = all_gather(flatten(col));
+    col.resize(order.size());
+    for (std::size_t j = 0; j < order.size(); ++j) take(flat.data() + k * order[j], col[j]);
+  });
+  for (std::size_t h = 0; h < hist.size(); ++h) {
+    const std::size_t c = std::size_t(hist[h].components);
+    const std::vector<double> flat = all_gather(p.history[h]);
+    p.history[h].resize(order.size() * c);
+    for (std::size_t j = 0; j < order.size(); ++j)
+      std::copy(flat.begin() + long(order[j] * c), flat.begin() + long((order[j] + 1) * c), p.history[h].begin() + long(j * c));
+  }
+  p.id.resize(order.size());
+  for (std::size_t j = 0; j < order.size(); ++j) p.id[j] = static_cast<long long>(ids[order[j]]);
+}
+
 void MpmComponent::save_state(StateArchive& a) const {
   for (const MpmMaterial& m : setup_.materials) {
     const std::string pre = prefix(m);
-    for_each_column(m.particles, m.grid, [&](const char* name, const auto& col) { a.put(pre + name, flatten(col)); });
-    a.put(pre + "id", std::vector<long long>(m.particles.id));
     const std::vector<HistoryVariable> hist = m.model->history();
-    for (std::size_t k = 0; k < hist.size(); ++k) a.put(pre + "history." + hist[k].name, m.particles.history[k]);
+    Particles gathered;
+    NodeGrid whole_grid;
+    if (layout_.distributed) {
+      gathered = m.particles;
+      whole_grid = m.grid;
+      gather_for_checkpoint(node_sums_, hist, gathered, whole_grid);
+    }
+    const Particles& p = layout_.distributed ? gathered : m.particles;
+    const NodeGrid& g = layout_.distributed ? whole_grid : m.grid;
+    for_each_column(p, g, [&](const char* name, const auto& col) { a.put(pre + name, flatten(col)); });
+    a.put(pre + "id", std::vector<long long>(p.id));
+    for (std::size_t k = 0; k < hist.size(); ++k) a.put(pre + "history." + hist[k].name, p.history[k]);
   }
   a.put_scalar("mpm.stable_dt", stable_dt_);
   a.put_scalar("mpm.time", time_);
@@ -305,6 +374,12 @@ void MpmComponent::load_state(const StateArchive& a) {
     boundary_force_[f] = Vec3(bndy[4 * f], bndy[4 * f + 1], bndy[4 * f + 2]);
     boundary_area_[f] = bndy[4 * f + 3];
   }
+  // Under mpirun each rank keeps the particles of its patches (mpm/MpmRanks.cpp);
+  // the node arrays stay whole (the next step's P2G rebuilds them).
+  const bool was_laid_out = laid_out_;
+  lay_out_patches();
+  if (was_laid_out)
+    for (MpmMaterial& m : setup_.materials) keep_own_particles(m);
 }
 
 }  // namespace tephra

@@ -16,12 +16,12 @@ PatchLayout PatchLayout::whole(const Grid& level) {
   return l;
 }
 
-PatchLayout PatchLayout::over_world_ranks(const Grid& level) {
+PatchLayout PatchLayout::over_world_ranks(const Grid& level, const std::vector<long long>& particles_per_patch) {
   const Ranks r = world_ranks();
   PatchLayout l = whole(level);
   if (r.size == 1) return l;
   l.distributed = true;
-  l.owner = assign_patches(level, {}, r.size).owner;
+  l.owner = assign_patches(level, particles_per_patch, r.size).owner;
   l.own.clear();
   for (std::size_t p = 0; p < l.owner.size(); ++p)
     if (l.owner[p] == r.rank) l.own.push_back(static_cast<int>(p));

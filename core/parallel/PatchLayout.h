@@ -26,8 +26,9 @@ struct PatchLayout {
 
   // Every patch here, no messages.
   static PatchLayout whole(const Grid& level);
-  // The patches cut over the world's ranks by assign_patches (cells only).
-  static PatchLayout over_world_ranks(const Grid& level);
+  // The patches cut over the world's ranks by assign_patches (cost: cells,
+  // plus particles when `particles_per_patch` is given, one count per patch).
+  static PatchLayout over_world_ranks(const Grid& level, const std::vector<long long>& particles_per_patch = {});
 
   // `level` with only the own patches (ids kept: Patch::id is the level index).
   Grid own_grid() const;

@@ -2,6 +2,7 @@
 
 #include <mpi.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <stdexcept>
 
@@ -39,6 +40,29 @@ std::vector<double> all_gather(const std::vector<double>& local) {
   MPI_Allgatherv(local.data(), n, MPI_DOUBLE, all.data(), counts.data(), offsets.data(), MPI_DOUBLE,
                  MPI_COMM_WORLD);
   return all;
+}
+
+std::vector<std::vector<double>> exchange_blocks(const std::vector<std::vector<double>>& to_rank) {
+  const Ranks r = world_ranks();
+  if (static_cast<int>(to_rank.size()) != r.size)
+    throw std::invalid_argument("exchange_blocks: one block per rank");
+  if (r.size == 1) return to_rank;
+  std::vector<int> send_counts(r.size), recv_counts(r.size), send_offsets(r.size, 0), recv_offsets(r.size, 0);
+  for (int s = 0; s < r.size; ++s) send_counts[s] = static_cast<int>(to_rank[s].size());
+  MPI_Alltoall(send_counts.data(), 1, MPI_INT, recv_counts.data(), 1, MPI_INT, MPI_COMM_WORLD);
+  for (int s = 1; s < r.size; ++s) {
+    send_offsets[s] = send_offsets[s - 1] + send_counts[s - 1];
+    recv_offsets[s] = recv_offsets[s - 1] + recv_counts[s - 1];
+  }
+  std::vector<double> send(static_cast<std::size_t>(send_offsets.back() + send_counts.back()));
+  for (int s = 0; s < r.size; ++s) std::copy(to_rank[s].begin(), to_rank[s].end(), send.begin() + send_offsets[s]);
+  std::vector<double> recv(static_cast<std::size_t>(recv_offsets.back() + recv_counts.back()));
+  MPI_Alltoallv(send.data(), send_counts.data(), send_offsets.data(), MPI_DOUBLE, recv.data(), recv_counts.data(),
+                recv_offsets.data(), MPI_DOUBLE, MPI_COMM_WORLD);
+  std::vector<std::vector<double>> from_rank(r.size);
+  for (int s = 0; s < r.size; ++s)
+    from_rank[s].assign(recv.begin() + recv_offsets[s], recv.begin() + recv_offsets[s] + recv_counts[s]);
+  return from_rank;
 }
 
 void barrier() {

@@ -26,6 +26,13 @@ Ranks world_ranks();
 // order (MPI_Allgatherv); with one rank returns `local`.
 std::vector<double> all_gather(const std::vector<double>& local);
 
+// Personalised all-to-all (MPI_Alltoall of the counts, then MPI_Alltoallv):
+// `to_rank[s]` goes to rank s (to_rank has one entry per rank; the entry of
+// this rank is returned to itself), the result's entry s is what rank s sent
+// here. One process: returns `to_rank`. Used by MPM for the node sums of
+// overlapping rank boxes and for particle migration (mpm/RankNodeSums, MpmRanks).
+std::vector<std::vector<double>> exchange_blocks(const std::vector<std::vector<double>>& to_rank);
+
 // Barrier across the world (no-op with one rank).
 void barrier();
 

@@ -66,6 +66,7 @@ void MpmComponent::compute_heat_rates(double dt) {
           hi = std::max(hi, *T);
         }
   }
+  lo = layout_.min(lo), hi = layout_.max(hi);  // over the MPI ranks: all decide alike
   if (!(hi > lo)) return;
   if (setup_.conduction_unsupported)
     throw MissingFeature(setup_.conduction_unsupported->first, setup_.conduction_unsupported->second);
@@ -77,12 +78,14 @@ void MpmComponent::compute_heat_rates(double dt) {
   for (std::size_t i = 0; i < mats.size(); ++i) {
     MpmMaterial& m = mats[i];
     temperature_to_grid(m.particles, m.stencils, m.grid, m.thermal);
+    sum_node_doubles(m.thermal.temperature);  // over the MPI ranks (divided by the global m_g already)
     if (faces && has_temperature_bcs(m.bcs)) {
       T_free[i] = m.thermal.temperature;
       apply_temperature_bcs(m.bcs, m.grid, m.thermal.temperature);
     }
     if (setup_.flags.explicit_heat_conduction && m.thermal_conductivity > 0.0)
       add_conduction_rate(m.particles, m.stencils, m.grid, m.thermal_conductivity, m.specific_heat, m.thermal);
+    sum_node_doubles(m.thermal.rate);  // over the MPI ranks (0 before the conduction term)
   }
   if (setup_.thermal_contact && mats.size() > 1) {
     std::vector<const NodeGrid*> grids;
@@ -103,6 +106,7 @@ void MpmComponent::compute_heat_rates(double dt) {
     MpmMaterial& m = mats[i];
     std::vector<Vec3> xbar;
     mass_weighted_position(m.particles, m.stencils, m.grid, xbar);
+    sum_node_vectors(xbar);  // over the MPI ranks
     face_temperature_rates(m.bcs, m.grid, m.thermal.temperature, T_free[i], xbar, dt, m.thermal.rate);
   }
 }

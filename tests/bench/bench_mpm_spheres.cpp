@@ -33,6 +33,7 @@
 #include "core/deck/DeckLoader.h"
 #include "core/deck/Validate.h"
 #include "core/grid/Loop.h"
+#include "core/parallel/Ranks.h"
 #include "mpm/MpmComponent.h"
 #include "tests/support/TestPaths.h"
 
@@ -54,6 +55,12 @@ double cpu_seconds() {
   rusage u{};
   getrusage(RUSAGE_SELF, &u);
   return u.ru_utime.tv_sec + 1e-6 * u.ru_utime.tv_usec + u.ru_stime.tv_sec + 1e-6 * u.ru_stime.tv_usec;
+}
+
+std::size_t particles_here(const MpmComponent& c) {
+  std::size_t n = 0;
+  for (const auto& m : c.materials()) n += m.particles.size();
+  return n;
 }
 
 int run_one(const std::string& interp, int threads, int steps) {
@@ -80,8 +87,10 @@ int run_one(const std::string& interp, int threads, int steps) {
   validate_deck(*deck);
   auto c = make_mpm_component(*deck);
   c->initialize();
+  // Under mpirun (MPM on ranks, docs/parallel.md) the particles of all ranks; rank 0's lines are the figures.
+  const Ranks ranks = world_ranks();
   std::size_t particles = 0;
-  for (const auto& m : c->materials()) particles += m.particles.size();
+  for (double n : all_gather({double(particles_here(*c))})) particles += std::size_t(n);
 
   phase_timers() = PhaseTimers{};  // the table shows the steps only
   const double delt_max = 1.0e-5, multiplier = 0.5;
@@ -97,8 +106,9 @@ int run_one(const std::string& interp, int threads, int steps) {
   const double cpu = cpu_seconds() - cpu_start;
   const double hwm = proc_status_bytes("VmHWM");
   const double rate = double(particles) * steps / wall;
-  std::printf("%-8s threads %d  particles %zu  steps %d  t = %.3e s  wall %.3f s\n", interp.c_str(), threads,
-              particles, steps, t, wall);
+  barrier();
+  std::printf("%-8s threads %d  ranks %d (this: %d)  particles %zu  steps %d  t = %.3e s  wall %.3f s\n", interp.c_str(),
+              threads, ranks.size, ranks.rank, particles, steps, t, wall);
   std::printf("  particle-steps/s %.3e   per thread %.3e   per CPU-second %.3e (CPU %.3f s)\n", rate,
               rate / threads, double(particles) * steps / cpu, cpu);
   std::printf("  VmHWM %.1f MB = %.0f B/particle; above the pre-build RSS: %.0f B/particle\n", hwm / 1048576.0,
