@@ -250,6 +250,7 @@ ConstitutiveModelP ViscoScram::create(const ModelParameters& params) {
   params.get_double("DCp_DTemperature");
   p.Gamma = params.get_double("Gamma");
   p.alpha = params.get_double("CoeffThermalExpansion", 0.0);
+  if (!params.mpm_flag("DoThermalExpansion", true)) p.alpha = 0.0;  // Vaango ViscoScram: alpha = 0 unless the MPM flag
   p.specific_heat = params.enclosing_double("specific_heat", 0.0);
   if (!(p.specific_heat > 0.0))
     params.fail("PR", "visco_scram heating needs the material's <specific_heat> > 0");

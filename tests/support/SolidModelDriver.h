@@ -41,6 +41,9 @@ class MapModelParameters final : public ModelParameters {
   std::map<std::string, std::shared_ptr<MapModelParameters>> blocks;
   std::string type;
   std::map<std::string, double> enclosing;
+  // Flags of the deck's <MPM> section (e.g. DoThermalExpansion); absent: the fallback.
+  std::map<std::string, bool> mpm_flags;
+  bool mpm_flag(const std::string& n, bool f) const override { return mpm_flags.count(n) ? mpm_flags.at(n) : f; }
   MapModelParameters& add_block(const std::string& name, const std::string& key,
                                 std::map<std::string, double> v = {}) {
     auto b = std::make_shared<MapModelParameters>(std::move(v));

@@ -130,6 +130,26 @@ TEST(ViscoScram, VolumetricPartIsKLnJMinusThermalStrain) {
   EXPECT_NEAR(s.history[ViscoScram::kVolHeat][0], 1.0 * 370.0 * trd, 1e-9 * 370 * std::abs(trd));
 }
 
+// <MPM><DoThermalExpansion>false</DoThermalExpansion> (Vaango ViscoScram zeroes
+// CoeffThermalExpansion under it): the same heated uniaxial-strain path gives
+// p = K ln J exactly, the thermal strain 3 alpha (T - 300) gone.
+TEST(ViscoScram, DoThermalExpansionFalseRemovesTheThermalStrain) {
+  MapModelParameters p = no_crack_params(kG, kRTau);
+  p.values["CoeffThermalExpansion"] = 1e-4;
+  p.mpm_flags["DoThermalExpansion"] = false;
+  const ConstitutiveModelP m = ViscoScram::create(p);
+  const double K = 2 * 6e9 * 1.3 / (3 * 0.4);
+  PointState s(*m);
+  ASSERT_EQ(step_point(*m, kRho0, s, M3::Identity(), 0.0), -1);
+  const double lam[3] = {0.99, 0.95, 0.9};
+  for (int k = 0; k < 3; ++k) {
+    s.temperature = 300.0 + 30.0 * (k + 1);
+    ASSERT_EQ(step_point(*m, kRho0, s, Eigen::Vector3d(lam[k], 1, 1).asDiagonal().toDenseMatrix(), 1e-3), -1);
+    const double p_exact = K * std::log(lam[k]);
+    EXPECT_NEAR(s.stress.trace() / 3, p_exact, 1e-12 * std::abs(p_exact));
+  }
+}
+
 TEST(ViscoScram, CrackGrowthLawAtHandComputedStates) {
   const ViscoScram m(*std::static_pointer_cast<const ViscoScram>(ViscoScram::create(scram_params(kG, kRTau))));
   const M3 s = Eigen::Vector3d(3e6, -1e6, -2e6).asDiagonal();   // s:s = 1.4e13 Pa^2
