@@ -1,5 +1,6 @@
-// Periodic MPM (<periodic>, mpm/PeriodicGrid.h), linear interpolation (the
-// wide stencils: test_mpm_periodic_wide.cpp).
+// Periodic MPM (<periodic>, mpm/PeriodicGrid.h): check 1 for every interpolator,
+// check 2 with linear (the wide stencils' wave and larger-domain checks:
+// test_mpm_periodic_wide.cpp).
 //  1. A block at uniform velocity in a fully periodic box translates through
 //     several box lengths: every particle at wrap(x0 + v t) (to round-off),
 //     momentum exactly conserved, no stress (l_p = 0 exactly: every node of a
@@ -30,10 +31,10 @@ namespace tephra {
 namespace {
 
 std::string deck_text(const std::string& grid, const std::string& box, const std::string& res, const std::string& v,
-                      double K, double G, const std::string& mpm = "") {
+                      double K, double G, const std::string& mpm = "", const std::string& interp = "linear") {
   std::ostringstream s;
   s << "<Uintah_specification><SimulationComponent type=\"mpm\"/>"
-    << "<MPM><interpolator>linear</interpolator>" << mpm << "</MPM>"
+    << "<MPM><interpolator>" << interp << "</interpolator>" << mpm << "</MPM>"
     << "<MaterialProperties><MPM><material><density>1000</density><thermal_conductivity>1</thermal_conductivity>"
     << "<specific_heat>1</specific_heat><constitutive_model type=\"hypo_elastic\"><K>" << K << "</K><G>" << G
     << "</G></constitutive_model><geom_object>" << box << "<res>" << res << "</res><velocity>" << v
@@ -42,14 +43,19 @@ std::string deck_text(const std::string& grid, const std::string& box, const std
   return s.str();
 }
 
-TEST(MpmPeriodic, UniformBlockTranslatesThroughThePeriodicBox) {
+// Check 1 for every interpolator with a periodic form (the wide stencils wrap
+// through their ghost node layers, mpm/PeriodicGrid.h).
+class MpmPeriodicBlock : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(MpmPeriodicBlock, UniformBlockTranslatesThroughThePeriodicBox) {
   set_thread_count(1);
+  const std::string interp = GetParam();
   const std::string grid =
       "<Box label=\"1\"><lower>[0,0,0]</lower><upper>[1,1,1]</upper><extraCells>[0,0,0]</extraCells>"
       "<patches>[1,1,1]</patches></Box><spacing>[0.125,0.125,0.125]</spacing><periodic>[1,1,1]</periodic>";
   auto deck = load_deck_from_string(
       deck_text(grid, "<box label=\"b\"><min>[0.25,0.25,0.25]</min><max>[0.75,0.75,0.75]</max></box>", "[2,2,2]",
-                "[2.0,1.0,-0.5]", 6e3, 3e3),
+                "[2.0,1.0,-0.5]", 6e3, 3e3, "", interp),
       "periodic_block.ups", ".");
   auto c = make_mpm_component(*deck);
   c->initialize();
@@ -76,12 +82,19 @@ TEST(MpmPeriodic, UniformBlockTranslatesThroughThePeriodicBox) {
     momentum += p.mass[i] * p.v[i];
     momentum0 += p0.mass[i] * p0.v[i];
   }
-  std::printf("periodic block: %d steps, max position error %.3g m, max |sigma| %.3g Pa, momentum change %.3g\n",
-              step, worst_x, worst_sigma, (momentum - momentum0).norm());
+  std::printf("periodic %s block: %d steps, max position error %.3g m, max |sigma| %.3g Pa, momentum change %.3g\n",
+              interp.c_str(), step, worst_x, worst_sigma, (momentum - momentum0).norm());
   EXPECT_LT(worst_x, 1e-12);
   EXPECT_LT(worst_sigma, 1e-6);
   EXPECT_LT((momentum - momentum0).norm(), 1e-12 * momentum0.norm());
 }
+
+INSTANTIATE_TEST_SUITE_P(Interpolators, MpmPeriodicBlock,
+                         ::testing::Values("linear", "gimp", "3rdorderBS", "cpgimp", "cpdi", "cpti"),
+                         [](const auto& info) {
+                           const std::string n = info.param;
+                           return n == "3rdorderBS" ? std::string("QuadraticBspline") : n;
+                         });
 
 // Period of the longest standing wave in a periodic bar of `cells` cells.
 double standing_wave_period(int cells) {

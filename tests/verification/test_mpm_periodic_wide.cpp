@@ -22,9 +22,8 @@
 //     L / c at second order in h (16 -> 32 cells, order 2 +- 0.3) and its
 //     Richardson extrapolation equals L / c within 0.05 % (the semi-discrete
 //     error of a consistent second-order discretisation is O((kh)^2)).
-//  3. A 3-D block translating diagonally through a fully periodic box (one
-//     box length in x, 1/2 in y, 1/4 in z): every particle at wrap(x0 + v t) to round-off (its CPDI
-//     corners and GIMP domains cross all three periodic faces), momentum exact.
+//  The 3-D block translating through a fully periodic box runs for every
+//  interpolator in test_mpm_periodic.cpp (MpmPeriodicBlock).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -189,48 +188,6 @@ TEST_P(PeriodicWide, StandingWavePeriodConvergesToLOverCAtSecondOrder) {
               interp.c_str(), e16, e32, order, extrapolated);
   EXPECT_NEAR(order, 2.0, 0.3);
   EXPECT_LT(std::abs(extrapolated), 5e-4);
-}
-
-TEST_P(PeriodicWide, BlockTranslatesThroughThe3DPeriodicBox) {
-  set_thread_count(1);
-  const std::string interp = GetParam();
-  const std::string grid =
-      "<Level><Box label=\"1\"><lower>[0,0,0]</lower><upper>[1,1,1]</upper><extraCells>[0,0,0]</extraCells>"
-      "<patches>[1,1,1]</patches></Box><spacing>[0.125,0.125,0.125]</spacing><periodic>[1,1,1]</periodic></Level>";
-  auto deck = load_deck_from_string(
-      deck_text(interp, grid, "<box label=\"b\"><min>[0.25,0.25,0.25]</min><max>[0.75,0.75,0.75]</max></box>",
-                "[2,2,2]", "[2.0,1.0,-0.5]"),
-      "periodic_block.ups", ".");
-  auto c = make_mpm_component(*deck);
-  c->initialize();
-  const Particles p0 = c->materials()[0].particles;
-  const Vec3 v(2.0, 1.0, -0.5);
-  const double t_end = 0.5;  // one box length in x
-  double t = 0;
-  int step = 0;
-  while (t < t_end) {
-    const double dt = std::min(0.5 * c->stable_timestep(), t_end - t);
-    c->advance(t, dt, ++step);
-    t += dt;
-  }
-  const Particles& p = c->materials()[0].particles;
-  double worst_x = 0, worst_sigma = 0;
-  Vec3 momentum = Vec3::Zero(), momentum0 = Vec3::Zero();
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    Vec3 expected = p0.x[i] + v * t_end;
-    for (int d = 0; d < 3; ++d) expected[d] -= std::floor(expected[d]);
-    Vec3 diff = p.x[i] - expected;
-    for (int d = 0; d < 3; ++d) diff[d] -= std::round(diff[d]);
-    worst_x = std::max(worst_x, diff.norm());
-    worst_sigma = std::max(worst_sigma, p.stress[i].norm());
-    momentum += p.mass[i] * p.v[i];
-    momentum0 += p0.mass[i] * p0.v[i];
-  }
-  std::printf("periodic %s block: %d steps, max position error %.3g m, max |sigma| %.3g Pa, momentum change %.3g\n",
-              interp.c_str(), step, worst_x, worst_sigma, (momentum - momentum0).norm());
-  EXPECT_LT(worst_x, 1e-12);
-  EXPECT_LT(worst_sigma, 1e-6);
-  EXPECT_LT((momentum - momentum0).norm(), 1e-12 * momentum0.norm());
 }
 
 INSTANTIATE_TEST_SUITE_P(Interpolators, PeriodicWide,
