@@ -132,7 +132,8 @@ void MpmComponent::fail_particle(const MpmMaterial& m, std::size_t i, int step, 
 }
 
 // Stencils + P2G (Alg. 5) on a reset grid, with the grid BCs on v_g.
-void MpmComponent::interpolate_to_grid(MpmMaterial& m, int step, const char* phase, bool may_reorder) {
+void MpmComponent::interpolate_to_grid(MpmMaterial& m, int step, const char* phase, bool may_reorder,
+                                       bool with_internal_force) {
   PhaseTimers::Scope t(phase_timers(), "MPM: interpolate particles to grid");
   // The per-axis stencil form (Interpolator.h) for linear, gimp and
   // 3rdorderBS when every support is inside the grid, not axisymmetric and no
@@ -157,7 +158,10 @@ void MpmComponent::interpolate_to_grid(MpmMaterial& m, int step, const char* pha
   // The threaded scatters' particle order (compute_stencils / compute_axis_stencils build their own).
   if (!axis_form && setup_.flags.axisymmetric) order_scatter(m.grid, m.stencils);
   m.grid.reset();
-  particles_to_grid(m.particles, m.stencils, setup_.gravity, m.grid);
+  if (with_internal_force && !setup_.flags.axisymmetric)
+    particles_to_grid_and_internal_force(m.particles, m.stencils, setup_.gravity, m.grid);  // f_int,g too (Alg. 6)
+  else
+    particles_to_grid(m.particles, m.stencils, setup_.gravity, m.grid);
   sum_particles_to_grid(m.grid);  // over the MPI ranks (mpm/MpmRanks.cpp; no-op in one process)
   fold_particle_sums(periodic_, m.grid);  // periodic aliases share the sums
   // Symmetry faces as mirrors: extra-cell sums onto their mirror nodes (mpm/SymmetryFold.h;
@@ -188,9 +192,10 @@ void MpmComponent::project_to_grid(MpmMaterial& m, int step, const char* phase) 
 }
 
 // f_int,g (Alg. 6; with the hoop term when axisymmetric), summed over periodic aliases.
-void MpmComponent::internal_force(MpmMaterial& m) {
+// scattered: the sum over the particles was taken by P2G (particles_to_grid_and_internal_force).
+void MpmComponent::internal_force(MpmMaterial& m, bool scattered) {
   if (setup_.flags.axisymmetric) axisymmetric_internal_force(m.particles, m.stencils, m.grid);
-  else compute_internal_force(m.particles, m.stencils, m.grid);
+  else if (!scattered) compute_internal_force(m.particles, m.stencils, m.grid);
   sum_node_vectors(m.grid.internal_force);  // over the MPI ranks
   fold_internal_force(periodic_, m.grid);
   if (!setup_.flags.axisymmetric) fold_symmetry_internal_force(m.bcs, m.grid);
@@ -379,7 +384,10 @@ void MpmComponent::advance(double t, double dt, int step) {
   // 1-3. Body force (gravity) and external loads enter P2G: m_g, V_g, v_g, f_ext,g (Alg. 5, eq. 1.69).
   //      On MPI ranks: first the node boxes the node sums combine over (mpm/MpmRanks.cpp).
   set_node_boxes();
-  for (MpmMaterial& m : mats) interpolate_to_grid(m, step, "interpolate particles to grid", true);
+  // 1-3 and 5 in one pass over the particles (the same node sums, the same bits)
+  // when nothing in between changes sigma_p, V_p, q_p or f_int,g: no contact, no MPMICE.
+  const bool fused_force = !contact && !coupling_ && !setup_.flags.axisymmetric;
+  for (MpmMaterial& m : mats) interpolate_to_grid(m, step, "interpolate particles to grid", true, fused_force);
   if (velocity_surfaces) find_surface_velocity_nodes(t);  // v_g = v(t_n) at the nodes they reach
   // MPMICE steps 1-6: node -> cell, equilibration, face velocities, pressure (mpmice/).
   if (coupling_) coupling_->after_interpolate_to_grid(t, dt, step);
@@ -388,7 +396,7 @@ void MpmComponent::advance(double t, double dt, int step) {
   // 5. f_int,g = -sum V_p sigma_p grad S_gp with sigma, V at t_n (Alg. 6, eq. 1.70).
   {
     PhaseTimers::Scope timer(phase_timers(), "MPM: compute internal force");
-    for (MpmMaterial& m : mats) internal_force(m);
+    for (MpmMaterial& m : mats) internal_force(m, fused_force);
     if (coupling_) coupling_->add_internal_forces();  // MPMICE: the cell pressure on the particles
     boundary_forces();
   }
@@ -494,7 +502,8 @@ void MpmComponent::advance(double t, double dt, int step) {
     const bool work = setup_.accumulate_strain_energy;
     if (work) acc_strain_energy_ += 0.5 * sum_over_ranks(piola_work(m.particles, m.F_old, m.F_old));  // sigma_n at F_n
     update_stress(m, step, dt);
-    plastic_work_ += sum_over_ranks(plastic_work_of_step(m.particles, m.plastic_work));  // PlasticWork (mpm/StrainWork.h)
+    if (setup_.accumulate_plastic_work)  // PlasticWork (mpm/StrainWork.h), only when saved: the same flag on every rank
+      plastic_work_ += sum_over_ranks(plastic_work_of_step(m.particles, m.plastic_work));
     if (work) acc_strain_energy_ += 0.5 * sum_over_ranks(piola_work(m.particles, m.particles.F, m.F_old));  // sigma_{n+1} at F_{n+1}
     stable_dt_ = std::min(stable_dt_, material_stable_timestep(m));
   }

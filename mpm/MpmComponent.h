@@ -70,6 +70,7 @@ struct MpmSetup {
   std::optional<RotatingFrame> rotating_frame;  // <MPM><rotating_coordinate_system>, or none
   std::optional<PrescribedDeformation> prescribed;  // <use_prescribed_deformation>, or none
   bool accumulate_strain_energy = false;  // the deck saves AccStrainEnergy (mpm/StrainWork.h)
+  bool accumulate_plastic_work = false;   // the deck saves PlasticWork (mpm/StrainWork.h)
   bool node_stress = true;  // P2G sums g.stressFS (NodeGrid::node_stress); false unless the deck saves it
                             // (always summed with a contact model: the friction contacts read it)
   bool thermal_contact = false;
@@ -121,8 +122,10 @@ class MpmComponent final : public Component {
   double material_stable_timestep(const MpmMaterial& m) const;
   double courant_number(const MpmMaterial& m, double dt) const;
   void project_to_grid(MpmMaterial& m, int step, const char* phase);
-  void internal_force(MpmMaterial& m);
-  void interpolate_to_grid(MpmMaterial& m, int step, const char* phase, bool may_reorder = false);
+  // with_internal_force: P2G also sums f_int,g (one pass, the same bits); internal_force() then skips its scatter.
+  void internal_force(MpmMaterial& m, bool scattered = false);
+  void interpolate_to_grid(MpmMaterial& m, int step, const char* phase, bool may_reorder = false,
+                           bool with_internal_force = false);
   // Permutes every per-particle column of m (particles, step columns, the
   // velocity-surface flags) into the scatter order of m.stencils (mpm/ParticleReorder.h).
   void reorder_particles(MpmMaterial& m);

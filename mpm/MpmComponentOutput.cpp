@@ -4,6 +4,7 @@
 #include "mpm/MpmComponent.h"
 
 #include <algorithm>
+#include <stdexcept>
 
 #include "core/parallel/Ranks.h"
 
@@ -253,9 +254,19 @@ std::map<std::string, std::vector<double>> MpmComponent::reductions(const std::s
   if (labels.count("KineticEnergy")) out["KineticEnergy"] = {ke};
   if (labels.count("StrainEnergy")) out["StrainEnergy"] = {se};
   // AccStrainEnergy: the work of the stresses summed over the steps (mpm/StrainWork.h).
-  if (labels.count("AccStrainEnergy")) out["AccStrainEnergy"] = {acc_strain_energy_};
   // PlasticWork: the models' plastic work summed over the steps (a Tephra label; mpm/StrainWork.h).
-  if (labels.count("PlasticWork")) out["PlasticWork"] = {plastic_work_};
+  // Both are summed during the steps only when the deck saves them: asking for
+  // one that was not summed is a caller's error, not a zero.
+  if (labels.count("AccStrainEnergy")) {
+    if (!setup_.accumulate_strain_energy)
+      throw std::logic_error("MPM reductions: AccStrainEnergy is summed only when the deck saves it");
+    out["AccStrainEnergy"] = {acc_strain_energy_};
+  }
+  if (labels.count("PlasticWork")) {
+    if (!setup_.accumulate_plastic_work)
+      throw std::logic_error("MPM reductions: PlasticWork is summed only when the deck saves it");
+    out["PlasticWork"] = {plastic_work_};
+  }
   if (labels.count("TotalMass")) out["TotalMass"] = {mass};
   if (labels.count("TotalMomentum")) out["TotalMomentum"] = {mom[0], mom[1], mom[2]};
   // sqrt(sum V0 |u_p - u_exact(X_p, t)|^2 / sum V0) with <run_MMS_problem>

@@ -16,7 +16,9 @@ double piola_work(const Particles& p, const std::vector<Mat3>& F_stress, const s
 
 double plastic_work_of_step(const Particles& p, const std::vector<double>& plastic_work) {
   double sum = 0.0;
-  for (std::size_t i = 0; i < p.size() && i < plastic_work.size(); ++i) sum += p.volume0[i] * plastic_work[i];
+  // plastic_work is a step column, sized to the particle count with the others
+  // (MpmComponent::size_step_columns, ParticleDeletion, migration).
+  for (std::size_t i = 0; i < p.size(); ++i) sum += p.volume0[i] * plastic_work[i];
   return sum;
 }
 

@@ -25,7 +25,9 @@ double piola_work(const Particles& p, const std::vector<Mat3>& F_stress, const s
 // the step per reference volume (SolidUpdateOutput::plastic_work, e.g.
 // elastic_plastic_hp: J sigma : d_eps^p). Summed over the steps it is the
 // plastic work W_p of the energy balance KE + StrainEnergy + W_p = KE_0 + work
-// of the external forces (docs/models/taylor-impact.md).
+// of the external forces (docs/models/taylor-impact.md). Summed only when the
+// deck saves PlasticWork (MpmSetup::accumulate_plastic_work). plastic_work has
+// one entry per particle.
 double plastic_work_of_step(const Particles& p, const std::vector<double>& plastic_work);
 
 }  // namespace tephra

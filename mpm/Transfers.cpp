@@ -27,8 +27,9 @@ namespace {
 constexpr std::size_t kMinParallel = 4096;
 
 // P2G of particle i into g (V: a stencil view, AxisStencils.h); the V sigma
-// sums only if Stress (g.stressFS wanted, NodeGrid::node_stress).
-template <bool Stress, class V>
+// sums only if Stress (g.stressFS wanted, NodeGrid::node_stress); with Force
+// also f_int,g -= V_p (sigma_p - q_p I) grad S (compute_internal_force's term).
+template <bool Stress, bool Force, class V>
 inline void p2g_particle(const Particles& p, const V& s, const Vec3& body_force, std::size_t i, NodeGrid& g) {
   const double mp = p.mass[i], vp = p.volume[i];
   const Vec3 momentum = mp * p.v[i];
@@ -40,31 +41,59 @@ inline void p2g_particle(const Particles& p, const V& s, const Vec3& body_force,
   Vec3* mom = g.velocity.data();
   Vec3* fext = g.external_force.data();
   Mat3* stress = g.stress.data();
-  s.weights(i, [&](std::size_t gi, double wk) {
-    mass[gi] += mp * wk;
-    volume[gi] += vp * wk;
-    mom[gi] += momentum * wk;
-    fext[gi] += force * wk;
-    if constexpr (Stress) stress[gi] += vol_stress * wk;
-  });
+  if constexpr (Force) {
+    // sigma - q I: the artificial bulk viscosity acts in the force only.
+    const Mat3 force_stress = p.volume[i] * (p.stress[i] - p.q[i] * Mat3::Identity());
+    Vec3* fint = g.internal_force.data();
+    // entries() gives S_gp with the same product as weights() (AxisStencils.h).
+    s.entries(i, [&](std::size_t gi, double wk, const Vec3& gr) {
+      mass[gi] += mp * wk;
+      volume[gi] += vp * wk;
+      mom[gi] += momentum * wk;
+      fext[gi] += force * wk;
+      if constexpr (Stress) stress[gi] += vol_stress * wk;
+      fint[gi] -= force_stress * gr;
+    });
+  } else {
+    s.weights(i, [&](std::size_t gi, double wk) {
+      mass[gi] += mp * wk;
+      volume[gi] += vp * wk;
+      mom[gi] += momentum * wk;
+      fext[gi] += force * wk;
+      if constexpr (Stress) stress[gi] += vol_stress * wk;
+    });
+  }
 }
 
-}  // namespace
-
-void particles_to_grid(const Particles& p, const Stencils& s, const Vec3& body_force, NodeGrid& g) {
+// P2G (with the internal force when Force), then v_g = momentum / m_g and sigma_g = (V sigma)_g / V_g.
+template <bool Force>
+void scatter_particles(const Particles& p, const Stencils& s, const Vec3& body_force, NodeGrid& g) {
   const std::size_t np = p.size(), nn = g.count();
   const bool stress = g.stress.size() == nn;
   visit_stencils(s, [&](const auto& view) {
     if (stress)
-      for_each_scatter_particle(s.order, np, [&](std::size_t i) { p2g_particle<true>(p, view, body_force, i, g); });
+      for_each_scatter_particle(s.order, np,
+                                [&](std::size_t i) { p2g_particle<true, Force>(p, view, body_force, i, g); });
     else
-      for_each_scatter_particle(s.order, np, [&](std::size_t i) { p2g_particle<false>(p, view, body_force, i, g); });
+      for_each_scatter_particle(s.order, np,
+                                [&](std::size_t i) { p2g_particle<false, Force>(p, view, body_force, i, g); });
   });
 #pragma omp parallel for schedule(static) if (nn >= kMinParallel)
   for (std::size_t gi = 0; gi < nn; ++gi) {
     if (g.mass[gi] > 0.0) g.velocity[gi] /= g.mass[gi];
     if (stress && g.volume[gi] > 0.0) g.stress[gi] /= g.volume[gi];
   }
+}
+
+}  // namespace
+
+void particles_to_grid(const Particles& p, const Stencils& s, const Vec3& body_force, NodeGrid& g) {
+  scatter_particles<false>(p, s, body_force, g);
+}
+
+void particles_to_grid_and_internal_force(const Particles& p, const Stencils& s, const Vec3& body_force,
+                                          NodeGrid& g) {
+  scatter_particles<true>(p, s, body_force, g);
 }
 
 void compute_internal_force(const Particles& p, const Stencils& s, NodeGrid& g) {

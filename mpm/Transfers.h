@@ -23,6 +23,14 @@ void particles_to_grid(const Particles& p, const Stencils& s, const Vec3& body_f
 // q_p the artificial bulk viscosity, 0 unless <artificial_viscosity>).
 void compute_internal_force(const Particles& p, const Stencils& s, NodeGrid& g);
 
+// particles_to_grid and compute_internal_force in one pass over the particles
+// and their stencils, on a reset grid: every node sum takes the same terms in
+// the same particle order (the scatter order), so the same bits as the two
+// calls. For the step when nothing between P2G and the internal force changes
+// sigma_p, V_p or q_p (no contact, no MPMICE; MpmComponent::advance).
+void particles_to_grid_and_internal_force(const Particles& p, const Stencils& s, const Vec3& body_force,
+                                          NodeGrid& g);
+
 // a_g = (f_int,g + f_ext,g) / m_g,  v*_g = v_g + a_g dt   (Alg. 7, eqs. 1.71-1.72).
 void integrate_grid_velocity(NodeGrid& g, double dt);
 

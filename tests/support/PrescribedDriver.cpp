@@ -44,7 +44,8 @@ PrescribedHistory drive_prescribed(const std::string& model_xml, const std::vect
        << "<Time><maxTime>" << rows.back().t << "</maxTime><initTime>" << rows.front().t
        << "</initTime><delt_min>0</delt_min><delt_max>1</delt_max><timestep_multiplier>1</timestep_multiplier></Time>"
        << "<DataArchiver><filebase>driver.uda</filebase><outputInterval>1</outputInterval>"
-       << "<save label=\"StrainEnergy\"/><save label=\"AccStrainEnergy\"/></DataArchiver>"
+       << "<save label=\"StrainEnergy\"/><save label=\"AccStrainEnergy\"/>"
+       << "<save label=\"PlasticWork\"/></DataArchiver>"
        << "<MPM><interpolator>linear</interpolator><use_prescribed_deformation>true</use_prescribed_deformation>"
        << "<prescribed_deformation_file>" << file << "</prescribed_deformation_file></MPM>"
        << "<PhysicalConstants><gravity>[0,0,0]</gravity></PhysicalConstants>"

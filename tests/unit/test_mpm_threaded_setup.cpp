@@ -10,7 +10,10 @@
 //   * NodeGrid::reset zeroes every array, sized to count(), for 1 and 2 threads;
 //   * velocity_gradients_and_first_order_F (one pass) gives the bits of
 //     velocity_gradients + update_deformation_gradients(FirstOrder), for the
-//     flat and per-axis (linear, gimp) stencils, with 1 and 2 threads.
+//     flat and per-axis (linear, gimp) stencils, with 1 and 2 threads;
+//   * particles_to_grid_and_internal_force (one pass) gives the bits of
+//     particles_to_grid + compute_internal_force on a reset grid, with and
+//     without g.stressFS, for the same stencil forms, with 1 and 2 threads.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -186,6 +189,64 @@ TEST(MpmThreadedSetup, FusedVelocityGradientAndFIsTheTwoPasses) {
       }
     }
   }
+}
+
+// Every node array of a and b bit for bit (EXPECT_EQ: no tolerance).
+void expect_same_nodes(const NodeGrid& a, const NodeGrid& b) {
+  ASSERT_EQ(a.count(), b.count());
+  ASSERT_EQ(a.stress.size(), b.stress.size());
+  ASSERT_EQ(a.mass.size(), a.count());
+  for (std::size_t gi = 0; gi < a.count(); ++gi) {
+    ASSERT_EQ(a.mass[gi], b.mass[gi]) << gi;
+    ASSERT_EQ(a.volume[gi], b.volume[gi]) << gi;
+    ASSERT_EQ(a.velocity[gi], b.velocity[gi]) << gi;
+    ASSERT_EQ(a.external_force[gi], b.external_force[gi]) << gi;
+    ASSERT_EQ(a.internal_force[gi], b.internal_force[gi]) << gi;
+    if (!a.stress.empty()) ASSERT_EQ(a.stress[gi], b.stress[gi]) << gi;
+  }
+}
+
+TEST(MpmThreadedSetup, FusedP2GAndInternalForceIsTheTwoPasses) {
+  NodeGrid g;
+  g.origin = Vec3(-1.0, 0.5, 0.0);
+  g.h = Vec3(0.1, 0.2, 0.15);
+  g.n = IntVec3(14, 16, 18);
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(0.0, 1.0), s(-1.0, 1.0);
+  Particles p;
+  for (int i = 0; i < 6000; ++i) {  // > 4096: the threaded scatter
+    const Vec3 x = g.origin + Vec3((2 + 9 * u(rng)) * g.h[0], (2 + 11 * u(rng)) * g.h[1], (2 + 13 * u(rng)) * g.h[2]);
+    p.add(x, Vec3(s(rng), s(rng), s(rng)), 0.5 + u(rng), 1e-3 * (0.5 + u(rng)), 300.0, 0.0, i,
+          Mat3::Identity() * 0.5);
+    p.stress.back() = 1e6 * Mat3::Random();
+    p.external_force.back() = Vec3(s(rng), s(rng), s(rng));
+  }
+  for (double& q : p.q) q = 1e5 * u(rng);  // artificial viscosity enters the force only
+  const Vec3 gravity(0.0, -9.81, 1.0);
+  for (int form = 0; form < 3; ++form)
+    for (bool node_stress : {false, true}) {
+      SCOPED_TRACE(testing::Message() << "form " << form << " node_stress " << node_stress);
+      Stencils st;
+      if (form == 0) ASSERT_EQ(compute_stencils(p, g, {InterpolatorKind::Gimp, 1e10}, st), -1);
+      if (form == 1) ASSERT_TRUE(compute_axis_stencils(p, g, {InterpolatorKind::Linear, 1e10}, st));
+      if (form == 2) ASSERT_TRUE(compute_axis_stencils(p, g, {InterpolatorKind::Gimp, 1e10}, st));
+      NodeGrid ref = g;
+      ref.node_stress = node_stress;
+      ref.reset();
+      particles_to_grid(p, st, gravity, ref);
+      compute_internal_force(p, st, ref);
+      double fmax = 0.0;
+      for (const Vec3& f : ref.internal_force) fmax = std::max(fmax, f.norm());
+      ASSERT_GT(fmax, 0.0);  // the comparison below is not of zeros
+      for (int threads : {1, 2}) {
+        Threads t(threads);
+        NodeGrid fused = g;
+        fused.node_stress = node_stress;
+        fused.reset();
+        particles_to_grid_and_internal_force(p, st, gravity, fused);
+        expect_same_nodes(ref, fused);
+      }
+    }
 }
 
 }  // namespace

@@ -59,6 +59,24 @@ double von_mises(const Mat3& s) {
   return std::sqrt(1.5 * d.squaredNorm());
 }
 
+// The deck with one more <DataArchiver><save label=...> (e.g. the Tephra label
+// PlasticWork, which MPM sums only when the deck saves it and the Vaango decks do not).
+std::unique_ptr<Deck> with_saved_label(std::unique_ptr<Deck> deck, const std::string& label) {
+  for (DeckNode& n : deck->root.children)
+    if (n.name == "DataArchiver") {
+      DeckNode save;
+      save.name = "save";
+      save.attributes = {{"label", label}};
+      save.file = n.file;
+      save.line = n.line;
+      n.children.push_back(save);
+      deck->root.finalize_parents();
+      return deck;
+    }
+  ADD_FAILURE() << deck->path << ": no <DataArchiver>";
+  return deck;
+}
+
 // The deck's step rule (timestep_multiplier, delt_max) up to `end`; check(t, component) every step.
 template <class Check>
 int run_loaded_deck(std::unique_ptr<Deck> deck, double end, Check&& check,
@@ -534,7 +552,9 @@ TEST(MetalDecks, A5CoarseTaylorImpactRunsToRest) {
       {{"Grid", "Level", "Box", "lower"}, "[0.0,-3.0e-3,0.0]"},
       {{"Grid", "Level", "Box", "upper"}, "[9.0e-3,36.0e-3,9.0e-3]"},
       {{"Grid", "Level", "Box", "resolution"}, "[9,39,9]"}};
-  const int steps = run_deck("Impact/cylinderImpact_A_JC.ups", end, [&](double t, double, const MpmComponent& c) {
+  const int steps = run_loaded_deck(
+      with_saved_label(load_deck(deck_path("Impact/cylinderImpact_A_JC.ups")), "PlasticWork"), end,
+      [&](double t, double, const MpmComponent& c) {
     const MpmMaterial& mat = c.materials()[1];
     const Particles& p = mat.particles;
     const auto r = c.reductions({"KineticEnergy", "StrainEnergy", "PlasticWork"});
