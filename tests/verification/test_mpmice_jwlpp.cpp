@@ -124,16 +124,19 @@ struct DetonationRun {
   double particles0 = 0, particles1 = 0;             // MPM mass
   double reactant0 = 0, reactant1 = 0, product0 = 0, product1 = 0;
   double burned = 0;                                 // sum of totalMassBurned
+  double end_fluid0 = 0, end_fluid1 = 0;             // fluid mass in the cells x > kCopper
 };
 
 double cell_x(const Grid& g, int i) { return g.lower[0] + (i + 0.5) * g.dx[0]; }
 
-// Sum of rho V over the interior cells of ICE material m.
-double fluid_mass(const IceComponent& ice, std::size_t m) {
+// Sum of rho V over the interior cells of ICE material m with x_c >= x_min.
+double fluid_mass(const IceComponent& ice, std::size_t m, double x_min = -1) {
   const Grid& g = ice.grid();
   double s = 0;
   for (std::size_t pi = 0; pi < g.patches.size(); ++pi)
-    for_each_cell_serial(g.patches[pi].cells(), [&](int i, int j, int k) { s += ice.fields()[m].rho_CC[pi](i, j, k); });
+    for_each_cell_serial(g.patches[pi].cells(), [&](int i, int j, int k) {
+      if (cell_x(g, i) >= x_min) s += ice.fields()[m].rho_CC[pi](i, j, k);
+    });
   return s * g.cell_volume();
 }
 
@@ -157,6 +160,7 @@ DetonationRun run(Component& c, const IceComponent& ice, std::size_t m0, const s
   out.particles0 = extra_mass();
   out.mass0 = out.particles0;
   for (std::size_t m = m0; m < ice.fields().size(); ++m) out.mass0 += fluid_mass(ice, m);
+  for (std::size_t m = m0; m < ice.fields().size(); ++m) out.end_fluid0 += fluid_mass(ice, m, kCopper);
   double time = 0;
   for (int step = 1; time < t_end; ++step) {
     // The fixed step must be stable for the component (ICE CFL, MPM wave speed).
@@ -179,6 +183,7 @@ DetonationRun run(Component& c, const IceComponent& ice, std::size_t m0, const s
   out.particles1 = extra_mass();
   out.mass1 = out.particles1;
   for (std::size_t m = m0; m < ice.fields().size(); ++m) out.mass1 += fluid_mass(ice, m);
+  for (std::size_t m = m0; m < ice.fields().size(); ++m) out.end_fluid1 += fluid_mass(ice, m, kCopper);
   // Least-squares speed over the second half of the samples.
   const std::size_t n0 = out.fronts.size() / 2;
   double st = 0, sx = 0, stt = 0, stx = 0;
@@ -222,6 +227,8 @@ TEST(MpmIceJwlpp, DetonationNextToAnInertSolidRunsAsInIceAlone) {
               coupled.fronts.back().front, coupled.speed, 100 * (coupled.speed / cj.D - 1));
   std::printf("ICE alone mass: total %.17g -> %.17g (%.2e relative)\n", alone.mass0, alone.mass1,
               alone.mass1 / alone.mass0 - 1);
+  std::printf("MPMICE fluid mass in the copper cells: %.6e -> %.6e kg (change %.3e kg)\n", coupled.end_fluid0,
+              coupled.end_fluid1, coupled.end_fluid1 - coupled.end_fluid0);
   std::printf("MPMICE mass: total %.17g -> %.17g (%.2e relative); particles %.17g -> %.17g; reactant loss %.6e, "
               "product gain %.6e, burned %.6e kg\n",
               coupled.mass0, coupled.mass1, coupled.mass1 / coupled.mass0 - 1, coupled.particles0, coupled.particles1,
@@ -234,9 +241,10 @@ TEST(MpmIceJwlpp, DetonationNextToAnInertSolidRunsAsInIceAlone) {
   EXPECT_EQ(differ, 0) << "steps whose front cell differs from ICE alone";
   EXPECT_NEAR(coupled.speed, alone.speed, 1e-9 * alone.speed);
 
-  // Mass: closed box, conserved up to the round-off of the per-step cell
-  // sums: bound 4 eps per step (measured: 1.49e-13 relative after 1001 steps,
-  // ICE alone the same size).
+  // Mass: closed box. Measured after 1001 steps: MPMICE 1.49e-13 relative
+  // (8.5e-18 kg), ICE alone 7.5e-15; the MPMICE excess is not explained
+  // (NOT shown to be round-off; the fluids in the copper cells hold
+  // 3.7e-11 kg). Bound: 4 eps per step, 8.9e-13.
   const double bound = 4 * 2.2e-16 * double(coupled.fronts.size() + 1);
   EXPECT_NEAR(coupled.mass1, coupled.mass0, bound * coupled.mass0);
   EXPECT_NEAR(alone.mass1, alone.mass0, bound * alone.mass0);
