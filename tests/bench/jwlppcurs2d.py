@@ -72,22 +72,18 @@ def front_history(tephra, out):
 
 
 def wall_history(tephra, out):
-    pos = extract(tephra, out, "p.x", 0)
-    vel = extract(tephra, out, "p.velocity", 0)
+    pos = extract(tephra, out, "p.velocity", 0)  # columns time, particle_id, x, y, z, p.velocity_x/y/z
+    vel = pos
     if not pos:
         return {}
     t0 = min(float(r["time"]) for r in pos)
-    keys = [k for k in pos[0] if k not in ("time", "material", "id", "x", "y", "z")]
-    start = {r["id"]: (float(r["x"]), float(r["y"])) for r in pos if float(r["time"]) == t0}
+    start = {r["particle_id"]: (float(r["x"]), float(r["y"])) for r in pos if float(r["time"]) == t0}
     groups = {s: {i for i, (x, y) in start.items() if y > 0.008 - DX / 2 and abs(x - s) <= 0.5e-3} for s in STATIONS}
-    vkey = [k for k in vel[0] if k not in ("time", "material", "id", "x", "y", "z")]
-    vy_key = vkey[1] if len(vkey) >= 3 else vkey[0]
     hist = {s: collections.defaultdict(list) for s in STATIONS}
     for r in vel:
         for s in STATIONS:
-            if r["id"] in groups[s]:
-                hist[s][float(r["time"])].append(float(r[vy_key]))
-    del keys
+            if r["particle_id"] in groups[s]:
+                hist[s][float(r["time"])].append(float(r["p.velocity_y"]))
     return {s: sorted((t, sum(v) / len(v)) for t, v in hist[s].items()) for s in STATIONS}
 
 
