@@ -2,15 +2,51 @@
 // the MPM materials first in the material list (Uintah's numbering, so that
 // <exchange_coefficients> and the boundary-condition ids count over both).
 #include <memory>
+#include <vector>
 
 #include "core/base/Errors.h"
 #include "core/deck/DeckLoader.h"
 #include "core/deck/DeckNode.h"
+#include "ice/models/SourceMaterials.h"
 #include "mpmice/BurnModels.h"
 #include "mpmice/MpmIceComponent.h"
 #include "mpmice/SolidEos.h"
 
 namespace tephra {
+
+namespace {
+
+// <Models> under MPMICE. The burn models of mpmice/BurnModels.h take mass from
+// the particles. The ICE models (JWLpp, LightTime, ZeroOrder, IandG,
+// PassiveScalar, mass_momentum_energy_src, ADD_HEAT) run as in ICE alone, at
+// the same place of the step (IceComponent::coupled_pressure_phases, after
+// the face velocities, before the pressure increment), as long as every
+// material they write sources for is an ICE material: a source on an MPM
+// material's cell copy would never reach the particles (the cell state of a
+// solid is re-projected from the particles every step), so an MPM reactant
+// of an ICE model is a MissingFeature naming the model and the material.
+void check_models_in_mpmice(const DeckNode& root, const IceSetup& s) {
+  // s.models holds <CFD><ICE><ADD_HEAT> first (when present), then the
+  // <Model> elements in deck order (parse_ice_models).
+  std::vector<const DeckNode*> model_nodes;
+  if (const DeckNode* models = root.child("Models")) model_nodes = models->children_named("Model");
+  const std::size_t offset = s.models.size() - model_nodes.size();
+  for (std::size_t i = 0; i < s.models.size(); ++i) {
+    const IceModel& m = *s.models[i];
+    if (dynamic_cast<const SolidBurnModel*>(&m)) continue;
+    const DeckNode& where = i >= offset ? *model_nodes[i - offset]
+                                        : root.require_child("CFD").require_child("ICE").require_child("ADD_HEAT");
+    const auto* sm = dynamic_cast<const SourceMaterials*>(&m);
+    if (!sm) where.missing_feature("<Model type=\"" + m.type() + "\"> in MPMICE");
+    for (std::size_t r : sm->source_materials())
+      if (s.materials[r].lagrangian)
+        where.missing_feature("<Model type=\"" + m.type() + "\"> with the MPM material '" + s.materials[r].name +
+                              "' in MPMICE (ICE models convert between ICE materials only; an MPM reactant "
+                              "needs a burn model: Simple_Burn, Steady_Burn)");
+  }
+}
+
+}  // namespace
 
 std::unique_ptr<MpmIceComponent> make_mpmice_component(const Deck& deck) {
   const DeckNode& root = deck.root;
@@ -55,11 +91,7 @@ std::unique_ptr<MpmIceComponent> make_mpmice_component(const Deck& deck) {
   IceSetup s = read_ice_setup(deck, std::move(solids), mpmice_burn_model_factories());
   if (s.implicit.enabled)
     root.require_child("CFD").require_child("ICE").missing_feature("<ImplicitSolver> in MPMICE (explicit pressure only so far)");
-  // <Models>: the burn models of mpmice/BurnModels.h; the ICE models (fluid
-  // reactant and product) are not wired into the coupled step yet.
-  for (const IceModelP& m : s.models)
-    if (!dynamic_cast<const SolidBurnModel*>(m.get()))
-      root.require_child("Models").missing_feature("<Model type=\"" + m->type() + "\"> in MPMICE (implemented there: Simple_Burn, Steady_Burn)");
+  check_models_in_mpmice(root, s);
   if (s.lodi.enabled) root.require_child("Grid").missing_feature("LODI boundary conditions in MPMICE");
   auto ice = std::make_unique<IceComponent>(std::move(s));
   return std::make_unique<MpmIceComponent>(std::move(mpm), std::move(ice), p_ref);

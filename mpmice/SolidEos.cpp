@@ -1,13 +1,15 @@
 #include "mpmice/SolidEos.h"
 
 #include "core/base/Errors.h"
+#include "models/solid/AbsolutePressureEos.h"
 #include "models/solid/ModifiedEos.h"
 
 namespace tephra {
 
 SolidEos::SolidEos(ConstitutiveModelP model, double density0, double p_ref, const DeckNode& where)
     : model_(std::move(model)), rho0_(density0), p_ref_(p_ref) {
-  if (!model_->pressure_at_density(rho0_, rho0_, 300.0))
+  if (!model_->pressure_at_density(rho0_, rho0_, 300.0) &&
+      !absolute_pressure_eos(*model_))
     where.missing_feature("constitutive_model '" + model_->type() +
                           "' in MPMICE (it has no pressure_at_density/density_at_pressure hooks yet)");
   if (model_->modified_eos() && !(p_ref_ > 0.0))

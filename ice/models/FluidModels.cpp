@@ -7,6 +7,7 @@
 #include "core/geometry/GeometryPiece.h"
 #include "core/grid/Loop.h"
 #include "ice/models/ModelSupport.h"
+#include "ice/models/SourceMaterials.h"
 
 namespace tephra {
 
@@ -17,7 +18,7 @@ namespace {
 //   dE = add_heat_coeff_i dt rho_CC V          [add_heat_coeff in W/kg].
 // The sum of dE over the last step is the reduction "TotalHeatAdded" (a
 // Tephra label; Uintah keeps no sum).
-class AddHeat final : public IceModel {
+class AddHeat final : public IceModel, public SourceMaterials {
  public:
   AddHeat(const DeckNode& n, const IceSetup& s) {
     ModelParams p(n, "ADD_HEAT");
@@ -35,6 +36,7 @@ class AddHeat final : public IceModel {
     p.finish();
   }
   std::string type() const override { return "ADD_HEAT"; }
+  std::vector<std::size_t> source_materials() const override { return mats_; }
   void initialize(const Grid&, const std::vector<IceMaterialFields>&) override {}
   std::set<std::string> labels() const override { return {"TotalHeatAdded"}; }
   void reductions(const std::set<std::string>& l, std::map<std::string, std::vector<double>>& out) const override {
@@ -82,7 +84,7 @@ class AddHeat final : public IceModel {
 // face fluxes); with varying rho only sum q is.
 // Not yet (exit 3): exponentialDecay, interiorSources and the non-uniform
 // initialisations.
-class PassiveScalar final : public IceModel {
+class PassiveScalar final : public IceModel, public SourceMaterials {
  public:
   // Two layouts: Vaango's code reads <PassiveScalar><material/><scalar name>
   // ... <initialization><geom_object>; Vaango's schema (ups_spec Models.xml,
@@ -148,6 +150,7 @@ class PassiveScalar final : public IceModel {
     if (regions_.empty()) sc.fail("PassiveScalar needs at least one initial <geom_object>");
   }
   std::string type() const override { return "PassiveScalar"; }
+  std::vector<std::size_t> source_materials() const override { return {m_}; }
   void initialize(const Grid& g, const std::vector<IceMaterialFields>& mats) override {
     grid_ = &g;
     mats_ = &mats;

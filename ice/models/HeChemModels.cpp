@@ -8,6 +8,7 @@
 
 #include "core/grid/Loop.h"
 #include "ice/models/ModelSupport.h"
+#include "ice/models/SourceMaterials.h"
 
 namespace tephra {
 
@@ -18,7 +19,7 @@ namespace {
 // step (labels "F" and "delF" on the reactant, as Uintah), and the mass and
 // heat of the last step (Uintah's per-step sums totalMassBurned and
 // totalHeatReleased).
-class Conversion : public IceModel {
+class Conversion : public IceModel, public SourceMaterials {
  public:
   void initialize(const Grid& g, const std::vector<IceMaterialFields>&) override {
     F_ = CellScalars(g, 0);
@@ -38,6 +39,7 @@ class Conversion : public IceModel {
   std::vector<std::pair<std::string, double*>> state_scalars() override {
     return {{"totalMassBurned", &burned_}, {"totalHeatReleased", &heat_}};
   }
+  std::vector<std::size_t> source_materials() const override { return {m0_, m1_}; }
   std::size_t reactant() const { return m0_; }
   std::size_t product() const { return m1_; }
 

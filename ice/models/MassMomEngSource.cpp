@@ -19,12 +19,13 @@
 // directly in <Model> (Vaango's schema, ups_spec Models.xml).
 #include "core/grid/Loop.h"
 #include "ice/models/ModelSupport.h"
+#include "ice/models/SourceMaterials.h"
 
 namespace tephra {
 
 namespace {
 
-class MassMomEngSource final : public IceModel {
+class MassMomEngSource final : public IceModel, public SourceMaterials {
  public:
   MassMomEngSource(const DeckNode& model, const IceSetup& s) {
     ModelParams p(model_block(model, "MassMomEng_src"), "mass_momentum_energy_src");
@@ -38,6 +39,7 @@ class MassMomEngSource final : public IceModel {
     p.finish();
   }
   std::string type() const override { return "mass_momentum_energy_src"; }
+  std::vector<std::size_t> source_materials() const override { return {m_}; }
   void initialize(const Grid&, const std::vector<IceMaterialFields>&) override {}
   std::set<std::string> labels() const override { return {"TotalMass_src", "TotalMom_src", "TotalEng_src"}; }
   void reductions(const std::set<std::string>& l, std::map<std::string, std::vector<double>>& out) const override {

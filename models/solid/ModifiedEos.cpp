@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "models/solid/AbsolutePressureEos.h"
+
 namespace tephra {
 
 SolidEosPoint modified_eos_expansion(double rho, double density0, double K0, double p_ref) {
@@ -29,6 +31,11 @@ std::optional<double> reference_bulk_modulus(const ConstitutiveModel& model, dou
 
 std::optional<SolidEosPoint> mpmice_pressure_at_density(const ConstitutiveModel& model, double rho, double density0,
                                                         double T, double p_ref) {
+  if (const AbsolutePressureEos* a = absolute_pressure_eos(model)) {
+    SolidEosPoint e = a->absolute_pressure_at_density(rho, density0, T, p_ref);
+    e.pressure -= p_ref;
+    return e;
+  }
   if (!model.modified_eos() || rho >= density0) return model.pressure_at_density(rho, density0, T);
   const auto K0 = reference_bulk_modulus(model, density0, T);
   if (!K0) return std::nullopt;
@@ -37,6 +44,8 @@ std::optional<SolidEosPoint> mpmice_pressure_at_density(const ConstitutiveModel&
 
 std::optional<double> mpmice_density_at_pressure(const ConstitutiveModel& model, double p_gauge, double density0,
                                                  double T, double p_ref) {
+  if (const AbsolutePressureEos* a = absolute_pressure_eos(model))
+    return a->density_at_absolute_pressure(p_gauge + p_ref, density0, T, p_ref);
   if (!model.modified_eos() || p_gauge >= 0.0) return model.density_at_pressure(p_gauge, density0, T);
   const auto K0 = reference_bulk_modulus(model, density0, T);
   if (!K0) return std::nullopt;
@@ -45,6 +54,8 @@ std::optional<double> mpmice_density_at_pressure(const ConstitutiveModel& model,
 
 std::optional<SolidEosPoint> mpmice_absolute_pressure_at_density(const ConstitutiveModel& model, double rho,
                                                                  double density0, double T, double p_ref) {
+  if (const AbsolutePressureEos* a = absolute_pressure_eos(model))
+    return a->absolute_pressure_at_density(rho, density0, T, p_ref);
   std::optional<SolidEosPoint> e;
   if (!model.modified_eos() || rho >= density0) {
     e = model.pressure_at_density(rho, density0, T);
@@ -60,6 +71,8 @@ std::optional<SolidEosPoint> mpmice_absolute_pressure_at_density(const Constitut
 
 std::optional<double> mpmice_density_at_absolute_pressure(const ConstitutiveModel& model, double p, double density0,
                                                           double T, double p_ref) {
+  if (const AbsolutePressureEos* a = absolute_pressure_eos(model))
+    return a->density_at_absolute_pressure(p, density0, T, p_ref);
   if (!model.modified_eos() || p >= p_ref) return model.density_at_pressure(p - p_ref, density0, T);
   const auto K0 = reference_bulk_modulus(model, density0, T);
   if (!K0) return std::nullopt;

@@ -25,8 +25,10 @@ SolidEosPoint modified_eos_expansion(double rho, double density0, double K0, dou
 // Its inverse for p_gauge in (-p_ref, 0].
 double modified_eos_expansion_density(double p_gauge, double density0, double K0, double p_ref);
 
-// The MPMICE hooks of a model with the run's reference pressure p_ref [Pa]: the model's hooks
-// when !model.modified_eos(), the two branches above otherwise. std::nullopt when the model has
+// The MPMICE hooks of a model with the run's reference pressure p_ref [Pa]: the model's
+// absolute-pressure hooks when it has them (models/solid/AbsolutePressureEos.h, minus p_ref
+// here), else the model's gauge hooks when !model.modified_eos(), the two branches
+// above otherwise. std::nullopt when the model has
 // no hooks.
 std::optional<SolidEosPoint> mpmice_pressure_at_density(const ConstitutiveModel& model, double rho, double density0,
                                                         double T, double p_ref);

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 #include <limits>
 
 #include <Eigen/LU>
@@ -195,7 +196,19 @@ long ViscoScram::update(const SolidUpdateInput& in, const SolidUpdateOutput& out
   });
 }
 
+SolidEosPoint ViscoScram::absolute_pressure_at_density(double rho, double density0, double T, double p_ref) const {
+  if (!p_.jwl) throw std::logic_error("visco_scram: absolute-pressure EOS without useJWLEOS");
+  return p_.jwl->pressure(rho, density0, T, p_ref);
+}
+
+double ViscoScram::density_at_absolute_pressure(double p, double density0, double T, double p_ref) const {
+  if (!p_.jwl) throw std::logic_error("visco_scram: absolute-pressure EOS without useJWLEOS");
+  return p_.jwl->density(p, density0, T, p_ref);
+}
+
+// The standard EOS (gauge). With <useJWLEOS> the hooks are the absolute ones above.
 std::optional<SolidEosPoint> ViscoScram::pressure_at_density(double rho, double density0, double) const {
+  if (p_.jwl) return std::nullopt;
   const double K = p_.bulk_modulus();
   SolidEosPoint e;
   e.pressure = 0.5 * K * (rho / density0 - density0 / rho);
@@ -205,16 +218,19 @@ std::optional<SolidEosPoint> ViscoScram::pressure_at_density(double rho, double 
 }
 
 std::optional<double> ViscoScram::density_at_pressure(double p_gauge, double density0, double) const {
+  if (p_.jwl) return std::nullopt;
   const double x = p_gauge / p_.bulk_modulus();
   return density0 * (x + std::sqrt(x * x + 1.0));
 }
 
 SolidEosPoint ViscoScram::modified_eos_pressure(double rho, double density0, double p_ref) const {
+  if (p_.jwl) throw std::logic_error("visco_scram useJWLEOS: the MPMICE EOS is absolute_pressure_at_density (needs T)");
   if (rho >= density0) return *pressure_at_density(rho, density0, 0.0);
   return modified_eos_expansion(rho, density0, p_.bulk_modulus(), p_ref);  // K0 = K (ModifiedEos.h)
 }
 
 double ViscoScram::modified_eos_density(double p_gauge, double density0, double p_ref) const {
+  if (p_.jwl) throw std::logic_error("visco_scram useJWLEOS: the MPMICE EOS is density_at_absolute_pressure (needs T)");
   if (p_gauge >= 0.0) return *density_at_pressure(p_gauge, density0, 0.0);
   return modified_eos_expansion_density(p_gauge, density0, p_.bulk_modulus(), p_ref);
 }
@@ -263,7 +279,29 @@ ConstitutiveModelP ViscoScram::create(const ModelParameters& params) {
   params.get_bool("useObjectiveRate", false);  // both settings: Green-Naghdi (ViscoScram.h)
   if (params.get_bool("randomize_parameters", false))
     params.missing_feature("randomize_parameters", "visco_scram randomized moduli (randomize_parameters = true)");
-  for (const char* eos : {"useJWLEOS", "useJWLCEOS", "useMurnahanEOS", "useBirchMurnaghanEOS"})
+  // <useJWLEOS> (Vaango: takes precedence over the Murnaghan options, and
+  // useJWLCEOS is then ignored): the MPMICE hooks of ViscoScramJwl.h.
+  if (params.get_bool("useJWLEOS", false)) {
+    ViscoScramJwl j;
+    j.A = params.get_double("A");
+    j.B = params.get_double("B");
+    j.R1 = params.get_double("R1");
+    j.R2 = params.get_double("R2");
+    j.om = params.get_double("om");
+    j.Cv = params.get_double("Cv");
+    if (!(j.R1 > 0.0)) params.fail("R1", "visco_scram JWL <R1> must be > 0");
+    if (!(j.R2 > 0.0)) params.fail("R2", "visco_scram JWL <R2> must be > 0");
+    if (!(j.A > 0.0)) params.fail("A", "visco_scram JWL <A> must be > 0 (the compression branch)");
+    if (!(j.Cv >= 0.0)) params.fail("Cv", "visco_scram JWL <Cv> must be >= 0");
+    j.modified = p.modified_eos;
+    p.jwl = j;
+    params.has("rho0");  // Vaango reads no rho0: the material's <density> is rho0
+    params.get_bool("useJWLCEOS", false);
+    params.get_bool("useMurnahanEOS", false);
+    params.get_bool("useBirchMurnaghanEOS", false);
+  }
+  if (!p.jwl)
+    for (const char* eos : {"useJWLCEOS", "useMurnahanEOS", "useBirchMurnaghanEOS"})
     if (params.get_bool(eos, false))
       params.missing_feature(eos, std::string("visco_scram volumetric response <") + eos + "> = true");
   // Parameters of visco_scram_hotspot that Vaango's visco_scram does not read either.

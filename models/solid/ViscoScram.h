@@ -69,7 +69,11 @@
 // required; CoeffThermalExpansion (0), use_time_temperature_equation (false;
 // WLF shift a_T = exp(-C1 (T - T0)/(C2 + T - T0)), RTau_i / a_T, T0 = 298,
 // C1 = 6.5, C2 = 120), useModifiedEOS, useObjectiveRate (false).
-// MissingFeature: randomize_parameters = true, useJWLEOS, useJWLCEOS,
+// <useJWLEOS> true (with A, B, R1, R2, om, Cv required; rho0 accepted and
+// unused, as by Vaango, which takes the material's density): the MPMICE hooks
+// are the JWL law of models/solid/ViscoScramJwl.h, in absolute pressure
+// (AbsolutePressureEos.h); the gauge hooks are then not provided.
+// MissingFeature: randomize_parameters = true, useJWLCEOS,
 // useMurnahanEOS, useBirchMurnaghanEOS. Accepted and unused, as by Vaango's
 // visco_scram: Chi, delH, Z, EoverR, dynamic_coeff_friction, volfracHE (the
 // parameters of visco_scram_hotspot that the stock burn decks also give).
@@ -77,7 +81,11 @@
 
 #include <Eigen/Core>
 
+#include <optional>
+
+#include "models/solid/AbsolutePressureEos.h"
 #include "models/solid/ConstitutiveModel.h"
+#include "models/solid/ViscoScramJwl.h"
 
 namespace tephra {
 
@@ -98,6 +106,7 @@ struct ViscoScramParams {
   bool time_temperature = false;            // use_time_temperature_equation
   double T0_wlf = 298.0, C1_wlf = 6.5, C2_wlf = 120.0;
   bool modified_eos = false;                // useModifiedEOS
+  std::optional<ViscoScramJwl> jwl;         // useJWLEOS (MPMICE hooks only)
 
   double shear_modulus() const { return G[0] + G[1] + G[2] + G[3] + G[4]; }
   double bulk_modulus() const { return 2.0 * shear_modulus() * (1.0 + nu) / (3.0 * (1.0 - 2.0 * nu)); }
@@ -128,7 +137,7 @@ void visco_scram_element_rates(const ViscoScramParams& P, const std::array<doubl
                                const Eigen::Matrix3d& d_dev, double c, double c_dot,
                                const std::array<Eigen::Matrix3d, 5>& s, std::array<Eigen::Matrix3d, 5>& rate);
 
-class ViscoScram final : public ConstitutiveModel {
+class ViscoScram final : public ConstitutiveModel, public AbsolutePressureEos {
  public:
   explicit ViscoScram(const ViscoScramParams& p) : p_(p) {}
   static ConstitutiveModelP create(const ModelParameters& params);
@@ -141,6 +150,10 @@ class ViscoScram final : public ConstitutiveModel {
   std::optional<SolidEosPoint> pressure_at_density(double rho, double density0, double T) const override;
   std::optional<double> density_at_pressure(double p_gauge, double density0, double T) const override;
   bool modified_eos() const override { return p_.modified_eos; }
+  // AbsolutePressureEos: the JWL hooks with <useJWLEOS> (ViscoScramJwl.h).
+  bool uses_absolute_pressure_eos() const override { return p_.jwl.has_value(); }
+  SolidEosPoint absolute_pressure_at_density(double rho, double density0, double T, double p_ref) const override;
+  double density_at_absolute_pressure(double p, double density0, double T, double p_ref) const override;
   // Vaango's modified EOS below rho0 (absolute pressure p_ref (rho/rho0)^(K/p_ref)),
   // standard EOS above; returns the GAUGE pressure p - p_ref.
   SolidEosPoint modified_eos_pressure(double rho, double density0, double p_ref) const;

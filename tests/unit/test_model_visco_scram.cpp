@@ -288,12 +288,13 @@ TEST(ViscoScram, StableAndExactForStepsFarAboveTheRelaxationTime) {
 }
 
 TEST(ViscoScram, DeckChecks) {
-  // Vaango's visco_scram: PR in (-1, 0.5); randomized moduli and the JWL /
-  // Murnaghan volumetric options are MissingFeature (std::logic_error here).
+  // Vaango's visco_scram: PR in (-1, 0.5); randomized moduli, JWLC and the
+  // Murnaghan volumetric options are MissingFeature (std::logic_error here);
+  // useJWLEOS needs its JWL constants (test_model_visco_scram_jwl).
   MapModelParameters p = scram_params(kG, kRTau);
   p.values["PR"] = 0.5;
   EXPECT_THROW(ViscoScram::create(p), std::invalid_argument);
-  for (const char* flag : {"randomize_parameters", "useJWLEOS", "useJWLCEOS", "useMurnahanEOS", "useBirchMurnaghanEOS"}) {
+  for (const char* flag : {"randomize_parameters", "useJWLCEOS", "useMurnahanEOS", "useBirchMurnaghanEOS"}) {
     MapModelParameters q = scram_params(kG, kRTau);
     q.values[flag] = 1;
     EXPECT_THROW(ViscoScram::create(q), std::logic_error) << flag;

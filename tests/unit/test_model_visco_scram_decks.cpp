@@ -11,6 +11,7 @@
 
 #include "core/base/Errors.h"
 #include "core/deck/DeckLoader.h"
+#include "models/solid/AbsolutePressureEos.h"
 #include "models/solid/ConstitutiveModel.h"
 #include "models/solid/ViscoScram.h"
 #include "mpm/DeckModelParameters.h"
@@ -52,17 +53,26 @@ TEST(ViscoScramDecks, PbxBlocksOfTheBurnDecksBuild) {
   }
 }
 
-TEST(ViscoScramDecks, JwlVolumetricOptionIsAMissingFeature) {
-  // BurnRate.ups asks for <useJWLEOS> true (exit 3, named).
+// BurnRate.ups asks for <useJWLEOS> true: the block builds, with the JWL
+// constants of the deck in the MPMICE hooks (absolute pressure; the gauge hooks
+// are not provided), and the hypoelastic moduli as without the flag.
+TEST(ViscoScramDecks, BurnRateBlockBuildsWithTheJwlEos) {
   auto deck = load_deck(test::shared_dir() + "/decks/inputs/MPMICE/BurnRate.ups");
   const auto blocks = scram_blocks(deck->root);
   ASSERT_EQ(blocks.size(), 1u);
-  try {
-    build(*blocks[0]);
-    FAIL() << "expected MissingFeature";
-  } catch (const MissingFeature& e) {
-    EXPECT_NE(std::string(e.what()).find("useJWLEOS"), std::string::npos) << e.what();
-  }
+  const ConstitutiveModelP m = build(*blocks[0]);
+  ASSERT_TRUE(m);
+  const auto& p = static_cast<const ViscoScram&>(*m).params();
+  ASSERT_TRUE(p.jwl.has_value());
+  EXPECT_EQ(p.jwl->A, 732000e9);
+  EXPECT_EQ(p.jwl->B, -5.2645e9);
+  EXPECT_EQ(p.jwl->R1, 14.1);
+  EXPECT_EQ(p.jwl->R2, 1.41);
+  EXPECT_EQ(p.jwl->om, 0.8867);
+  EXPECT_EQ(p.jwl->Cv, 2.780236e6);
+  EXPECT_FALSE(p.jwl->modified);
+  EXPECT_FALSE(m->pressure_at_density(1832.0, 1832.0, 298.0).has_value());
+  EXPECT_NE(absolute_pressure_eos(*m), nullptr);
 }
 
 }  // namespace

@@ -1,0 +1,132 @@
+#!/usr/bin/env python3
+"""Benchmark (not a test): the copper-confined ANFO rate stick
+MPMICE/JWLppCuRS2d.ups (decks README C4) and its unconfined twin, run
+through `tephra`: detonation front against time, front speed, and the
+copper wall's radial velocity against time.
+
+Usage:
+  tests/bench/jwlppcurs2d.py BUILD_DIR run     confined|unconfined [OUT_ROOT] [--end-time T]
+  tests/bench/jwlppcurs2d.py BUILD_DIR analyse confined|unconfined [OUT_ROOT]
+
+The deck is 2-D planar (200 x 48 x 1 cells of 0.25 mm, x in [-10, 40] mm,
+y in [0, 12] mm, symmetry at y = 0): a slab of ANFO of half-thickness 6 mm
+in a copper wall 6 to 8 mm, initiated by a copper "whacker" at 120 m/s.
+confined: the deck unchanged (its include paths made absolute).
+unconfined: the copper wall removed (its outer radius set to the stick's
+6 mm, so the difference is empty and the air fills r > 6 mm); the whacker
+and everything else unchanged.
+
+Front: as rate_stick_size_effect.py (the ICE helper's size-effect study,
+whose fit_slope, D_CJ and reference points are imported, not copied): the
+largest x of an axis cell (y = z = dx/2) with F >= 0.5, F the reacted
+fraction saved on the reactant (material 1 here: copper is MPM material 0);
+speed: least-squares slope over the outputs with t >= 8 us and
+x_front <= 35 mm (the x+ face is 5 mm further). Wall velocity: the mean
+v_y of the copper particles of the outermost layer (initial y > 7.875 mm)
+within 0.5 mm of x = 10, 20, 30 mm, at every output.
+"""
+import collections
+import csv
+import os
+import re
+import subprocess
+import sys
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, HERE)
+from rate_stick_size_effect import D_CJ, fit_slope  # noqa: E402
+
+DECKS = os.path.normpath(os.path.join(HERE, "..", "..", "..", "shared", "decks"))
+DECK = os.path.join(DECKS, "inputs", "MPMICE", "JWLppCuRS2d.ups")
+DX = 0.25e-3
+STATIONS = (0.010, 0.020, 0.030)
+
+
+def make_deck(kind):
+    text = open(DECK, encoding="iso-8859-1").read()
+    text = text.replace('href="inputs/', 'href="' + os.path.join(DECKS, "inputs") + "/")
+    if kind == "unconfined":
+        text, n = re.subn(r"<radius>\s*0\.008\s*</radius>", "<radius> 0.006 </radius>", text, count=1)
+        assert n == 1, "copper radius not found"
+    return text
+
+
+def extract(tephra, out, var, material, line=None):
+    cmd = [tephra, "extract", out, "--var", var, "--material", str(material), "--all-times"]
+    if line:
+        cmd += ["--line", line]
+    text = subprocess.run(cmd, check=True, capture_output=True, text=True).stdout
+    return list(csv.DictReader(text.splitlines()))
+
+
+def front_history(tephra, out):
+    y = 0.5 * DX
+    rows = collections.defaultdict(list)
+    for r in extract(tephra, out, "F", 1, f"-0.00999,{y},{y},0.03999,{y},{y}"):
+        rows[float(r["time"])].append((float(r["x"]), float(r["F"])))
+    front = []
+    for t in sorted(rows):
+        xs = [x for x, f in rows[t] if f >= 0.5]
+        front.append((t, max(xs) if xs else None))
+    return front
+
+
+def wall_history(tephra, out):
+    pos = extract(tephra, out, "p.velocity", 0)  # columns time, particle_id, x, y, z, p.velocity_x/y/z
+    vel = pos
+    if not pos:
+        return {}
+    t0 = min(float(r["time"]) for r in pos)
+    start = {r["particle_id"]: (float(r["x"]), float(r["y"])) for r in pos if float(r["time"]) == t0}
+    groups = {s: {i for i, (x, y) in start.items() if y > 0.008 - DX / 2 and abs(x - s) <= 0.5e-3} for s in STATIONS}
+    hist = {s: collections.defaultdict(list) for s in STATIONS}
+    for r in vel:
+        for s in STATIONS:
+            if r["particle_id"] in groups[s]:
+                hist[s][float(r["time"])].append(float(r["p.velocity_y"]))
+    return {s: sorted((t, sum(v) / len(v)) for t, v in hist[s].items()) for s in STATIONS}
+
+
+def analyse(tephra, out, kind):
+    front = front_history(tephra, out)
+    for t, x in front[::5]:
+        print(f"t = {t * 1e6:6.2f} us  front = {x * 1e3 if x is not None else float('nan'):6.2f} mm")
+    pts = [(t, x) for t, x in front if x is not None and t >= 8e-6 - 1e-12 and x <= 0.035]
+    d = fit_slope(pts) if len(pts) > 2 else float("nan")
+    print(f"{kind}: D = {d:.0f} m/s over {len(pts)} outputs (t >= 8 us, x_front <= 35 mm); "
+          f"D/D_CJ = {d / D_CJ:.4f} (D_CJ = {D_CJ} m/s, 1-D CJ of the products)")
+    if kind == "confined":
+        wall = wall_history(tephra, out)
+        for s, h in wall.items():
+            print(f"wall v_y at x = {s * 1e3:.0f} mm (outer layer):")
+            for t, v in h[::5]:
+                print(f"   t = {t * 1e6:6.2f} us  v_y = {v:8.2f} m/s")
+            if h:
+                print(f"   max v_y = {max(v for _, v in h):.1f} m/s")
+    return d
+
+
+def main():
+    build, mode, kind = sys.argv[1], sys.argv[2], sys.argv[3]
+    args = [a for a in sys.argv[4:]]
+    end = None
+    if "--end-time" in args:
+        i = args.index("--end-time")
+        end = args[i + 1]
+        del args[i:i + 2]
+    root = args[0] if args else "/tmp/jwlppcurs2d"
+    tephra = os.path.join(build, "bin", "tephra")
+    out = os.path.join(root, kind)
+    if mode == "run":
+        os.makedirs(root, exist_ok=True)
+        deck = out + ".ups"
+        open(deck, "w").write(make_deck(kind))
+        cmd = [tephra, deck, "--output", out]
+        if end:
+            cmd += ["--end-time", end]
+        subprocess.run(cmd, check=True)
+    analyse(tephra, out, kind)
+
+
+if __name__ == "__main__":
+    main()
