@@ -8,7 +8,6 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "core/base/Errors.h"
 #include "core/base/PhaseTimers.h"
 #include "core/grid/Loop.h"
 #include "ice/Equilibration.h"
@@ -340,29 +339,15 @@ void IceComponent::advance_one(double dt, int step) {
 }
 
 // The coupled MPMICE step calls the explicit step in two halves (the order
-// of advance_one, without the half-step restarts).
+// of advance_one, without the implicit pressure, which the MPMICE deck reader
+// rejects for now, and without the half-step restarts).
 void IceComponent::coupled_pressure_phases(double dt, int step) {
   PhaseTimers& T = phase_timers();
   { PhaseTimers::Scope s(T, "ICE: equilibration pressure");       compute_equilibration_pressure(step); }
-  if (setup_.implicit.enabled) {
-    // Semi-implicit pressure in MPMICE: the same solve as ICE alone (the
-    // solids' volume fluxes come from the particles and do not depend on the
-    // pressure iterate). MPM has already projected the particles, so a
-    // failed solve cannot redo the step at dt/2: it stops with where and why.
-    if (model_src_) { PhaseTimers::Scope s(T, "ICE: model sources"); compute_model_sources(dt, step); }
-    PhaseTimers::Scope s(T, "ICE: implicit pressure");
-    try {
-      implicit_pressure_solve(dt, step);
-    } catch (const StepRestart& r) {
-      throw NumericalFailure("MPMICE implicit pressure at step " + std::to_string(step) + ": " + r.why +
-                             " (a coupled step cannot be redone)");
-    }
-  } else {
-    { PhaseTimers::Scope s(T, "ICE: face velocities");            compute_face_velocities(dt, press_equil_CC_); }
-    { PhaseTimers::Scope s(T, "ICE: face momentum exchange");     add_exchange_to_face_velocities(dt); }
-    if (model_src_) { PhaseTimers::Scope s(T, "ICE: model sources"); compute_model_sources(dt, step); }
-    { PhaseTimers::Scope s(T, "ICE: pressure increment");         compute_delP_and_pressure(dt); }
-  }
+  { PhaseTimers::Scope s(T, "ICE: face velocities");              compute_face_velocities(dt, press_equil_CC_); }
+  { PhaseTimers::Scope s(T, "ICE: face momentum exchange");       add_exchange_to_face_velocities(dt); }
+  if (model_src_) { PhaseTimers::Scope s(T, "ICE: model sources"); compute_model_sources(dt, step); }
+  { PhaseTimers::Scope s(T, "ICE: pressure increment");           compute_delP_and_pressure(dt); }
   { PhaseTimers::Scope s(T, "ICE: face pressure");                compute_face_pressure(); }
 }
 

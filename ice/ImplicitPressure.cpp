@@ -120,9 +120,6 @@ void IceComponent::assemble_pressure_matrix(double dt) {
               const BCKind vk = setup_.bcs[m][face][kBcVelocity].kind;
               if (vk == BCKind::Dirichlet || vk == BCKind::Symmetry) continue;  // face velocity fixed
             }
-            // An MPMICE solid's volume flux comes from the particles' motion
-            // (IceLagrangianFlux.cpp), not from the pressure iterate.
-            if (has_lagrangian_flux(m)) continue;
             const IceMaterialFields& f = mats_[m];
             const double theta_f = 0.5 * (f.vol_frac_CC[pi](C) + f.vol_frac_CC[pi](N));
             const double vC = f.sp_vol_CC[pi](C), vN = f.sp_vol_CC[pi](N);

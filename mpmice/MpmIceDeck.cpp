@@ -53,6 +53,10 @@ std::unique_ptr<MpmIceComponent> make_mpmice_component(const Deck& deck) {
     solids.push_back(std::move(spec));
   }
   IceSetup s = read_ice_setup(deck, std::move(solids), mpmice_burn_model_factories());
+  if (s.implicit.enabled)
+    root.require_child("CFD").require_child("ICE").missing_feature(
+        "<ImplicitSolver> in MPMICE (explicit pressure only so far; the coupled implicit solve was tried: its outer "
+        "iterations stall with moving solids, docs/mpmice.md)");
   // <Models>: the burn models of mpmice/BurnModels.h; the ICE models (fluid
   // reactant and product) are not wired into the coupled step yet.
   for (const IceModelP& m : s.models)

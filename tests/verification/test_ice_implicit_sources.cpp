@@ -29,6 +29,7 @@
 #include <cstdio>
 #include <sstream>
 
+#include "core/base/Errors.h"
 #include "core/deck/DeckLoader.h"
 #include "core/grid/Loop.h"
 #include "ice/IceComponent.h"
@@ -186,6 +187,42 @@ TEST(IceImplicitSources, HeatedTubeImplicitMatchesExplicit) {
   EXPECT_LT(e.mass_drift, 1e-13);
   EXPECT_LT(i.mass_drift, 1e-13);
   EXPECT_LT(diff, 2 * dterr);  // implicit - explicit within twice the explicit dt-halving difference
+}
+
+// <isSurroundingMatl> (IceSetup.h, IceMaterialSpec::surrounding): recorded as
+// the background material; it changes nothing in the run (Tephra's
+// hydrostatic pressure BC uses the mixture density, and SteadyBurn_2dRT has
+// no gravity), so a run with the flag is bit-identical to one without; two
+// surrounding materials are a DeckError.
+TEST(IceSurroundingMaterial, FlagIsRecordedAndChangesNothing) {
+  const std::string a = gas("A", -1, 0.08, kRho0), b = gas("B", 0.08, 1, kRho0 * 0.5);
+  const std::string flag = "<isSurroundingMatl>true</isSurroundingMatl>";
+  auto with_flag = [&](const std::string& m) { return m.substr(0, m.find("<geom_object>")) + flag + m.substr(m.find("<geom_object>")); };
+  const std::string ex = "<momentum>[1e15]</momentum><heat>[1e15]</heat>";
+  auto d0 = load_deck_from_string(deck(24, 0.24, a + b, ex, "", true), "plain.ups", ".");
+  auto d1 = load_deck_from_string(deck(24, 0.24, a + with_flag(b), ex, "", true), "flag.ups", ".");
+  auto ice0 = make_ice_component(*d0), ice1 = make_ice_component(*d1);
+  EXPECT_EQ(ice0->setup().surrounding_material, -1);
+  EXPECT_EQ(ice1->setup().surrounding_material, 1);
+  EXPECT_TRUE(ice1->setup().materials[1].surrounding);
+  ice0->initialize();
+  ice1->initialize();
+  double t = 0;
+  for (int step = 1; step <= 30; ++step) {
+    const double dt = ice0->stable_timestep();
+    ASSERT_EQ(dt, ice1->stable_timestep());
+    ice0->advance(t, dt, step);
+    ice1->advance(t, dt, step);
+    t += dt;
+  }
+  for (int i = 0; i < 24; ++i) {
+    EXPECT_EQ(cell(ice0->press_CC(), i), cell(ice1->press_CC(), i));
+    EXPECT_EQ(cell(ice0->fields()[1].rho_CC, i), cell(ice1->fields()[1].rho_CC, i));
+  }
+  EXPECT_NE(cell(ice0->press_CC(), 8), 101325.0);  // the density jump did drive a flow
+  EXPECT_THROW(make_ice_component(*load_deck_from_string(deck(24, 0.24, with_flag(a) + with_flag(b), ex, "", true),
+                                                          "two.ups", ".")),
+               DeckError);
 }
 
 }  // namespace
