@@ -321,6 +321,10 @@ void IceComponent::advance_one(double dt, int step) {
   PhaseTimers& T = phase_timers();
   { PhaseTimers::Scope s(T, "ICE: equilibration pressure");       compute_equilibration_pressure(step); }
   if (setup_.implicit.enabled) {
+    // Uintah's implicit order: the model sources and the volume fractions
+    // they change come before the pressure solve, whose right-hand side
+    // carries their mass-exchange term (ImplicitPressure.cpp).
+    if (model_src_) { PhaseTimers::Scope s(T, "ICE: model sources"); compute_model_sources(dt, step); }
     PhaseTimers::Scope s(T, "ICE: implicit pressure");            implicit_pressure_solve(dt, step);
   } else {
     { PhaseTimers::Scope s(T, "ICE: face velocities");            compute_face_velocities(dt, press_equil_CC_); }

@@ -173,7 +173,9 @@ IceMaterialSpec parse_material(const DeckNode& mat, int index, GeometryRegistry&
       m.tiny_rho = positive(mat, "tiny_rho");
     } else if (c.name == "SpecificHeatModel" || c.name == "gamma" || c.name == "specific_heat" || c.name == "dynamic_viscosity" ||
                c.name == "thermal_conductivity") {
-    } else if (c.name == "isSurroundingMatl" || c.name == "includeFlowWork") {
+    } else if (c.name == "isSurroundingMatl") {
+      m.surrounding = c.as_bool();  // IceSetup.h: recorded; the pressure BC uses the mixture density
+    } else if (c.name == "includeFlowWork") {
       if (c.as_bool()) c.missing_feature("ICE material <" + c.name + "> = true");
     } else {
       c.missing_feature("ICE material property <" + c.name + ">");
@@ -490,8 +492,18 @@ IceSetup read_ice_setup(const Deck& deck, std::vector<IceMaterialSpec> solids, c
           for (const DeckNode& go : mat.children)
             if (go.name == "geom_object") geometry.parse_geom_object(go);
   for (const DeckNode& c : ice.children) {
-    if (c.name == "material") s.materials.push_back(parse_material(c, int(s.materials.size()), geometry));
-    else c.missing_feature("<MaterialProperties><ICE><" + c.name + ">");
+    if (c.name == "material") {
+      s.materials.push_back(parse_material(c, int(s.materials.size()), geometry));
+      if (s.materials.back().surrounding) {
+        // Uintah silently keeps the last one; two background materials is a deck error.
+        if (s.surrounding_material >= 0)
+          c.require_child("isSurroundingMatl").fail("a second ICE material with <isSurroundingMatl> true (material " +
+                                                    std::to_string(s.surrounding_material) + " is already the surrounding material)");
+        s.surrounding_material = int(s.materials.size()) - 1;
+      }
+    } else {
+      c.missing_feature("<MaterialProperties><ICE><" + c.name + ">");
+    }
   }
   if (s.materials.empty() ||
       std::none_of(s.materials.begin(), s.materials.end(), [](const IceMaterialSpec& m) { return !m.lagrangian; }))
@@ -540,8 +552,6 @@ IceSetup read_ice_setup(const Deck& deck, std::vector<IceMaterialSpec> solids, c
       }
     }
   s.models = parse_ice_models(root, s, models);
-  if (!s.models.empty() && s.implicit.enabled)
-    root.require_child("CFD").missing_feature("reaction/source models with the implicit pressure solve");
   read_lodi(bcs, s);
   return s;
 }

@@ -44,6 +44,15 @@ struct IceMaterialSpec {
   // velocities, pressure and exchange but neither advects it nor adds gravity
   // (the MPM grid does). eos wraps the constitutive model's pressure hooks.
   bool lagrangian = false;
+  // <isSurroundingMatl> (Uintah ICEMaterial): marks the background fluid. In
+  // Uintah its only use is the hydrostatic adjustment of the pressure BC
+  // (the surrounding material's micro density, and it must be given when
+  // gravity is on). Tephra's adjustment (apply_hydrostatic_pressure_bc) uses
+  // the cell's bulk mixture density sum rho_CC, which the face-velocity
+  // balance (eq. 26.1) needs and which equals the surrounding material's
+  // micro density where that material fills the boundary cell; so the flag
+  // is recorded (IceSetup::surrounding_material) and changes nothing else.
+  bool surrounding = false;
 };
 
 enum class AdvectionOrder { First, Second };
@@ -88,6 +97,7 @@ enum IceBcLabel { kBcPressure = 0, kBcVelocity, kBcTemperature, kBcDensity, kBcS
 struct IceSetup {
   Grid grid;
   std::vector<IceMaterialSpec> materials;
+  int surrounding_material = -1;  // the material with <isSurroundingMatl> true, or -1 (IceMaterialSpec::surrounding)
   AdvectionOrder advection = AdvectionOrder::First;
   double cfl = 0.5;
   DeltScheme delt_scheme = DeltScheme::Aggressive;

@@ -13,6 +13,16 @@
 // theta_f u_f dt/dx_d changes by -a_f (dp_R - dp_L) with
 //   a_f = sum_m theta_f,m v_f,m dt^2/dx_d^2,
 //   theta_f = (theta_L + theta_R)/2,  v_f = 2 v_L v_R/(v_L + v_R).
+// Source models (Uintah's setupRHS, impICE.cc): the mass a model adds in a
+// cell, S_M,m, arrives at the micro specific volume v_m of its material and
+// must be squeezed into the cell as well, so the balance gains the term
+//   term1 = sum_m S_M,m v_m / V          (delP_MassX_ before the division,
+// computed with the volume fractions in compute_model_sources, which runs
+// first, as Uintah's computeModelSources/updateVolumeFraction do):
+//   R(p) = sum_m theta_m kappa_m (p - p_eq) - sum_m A_m(u_f(p)) - term1 = 0.
+// After convergence (Uintah's computeDel_P) the increment splits as
+//   delP_MassX = term1 / sum theta kappa,  delP_Dilatate = p - p_eq - delP_MassX,
+// the same split the explicit step makes (eq. 26.2), and p >= 1e-12 Pa (Uintah's clamp).
 // Newton-like outer iterations solve the symmetric positive definite system
 //   (sum theta kappa + sum_faces a_f) dp_C - sum_faces a_f dp_nb = -R(p)
 // (the matrix neglects the exchange and the upwind switch of the flux; the
@@ -30,6 +40,7 @@
 // owns dt, so here the interval is redone as two steps of dt/2 (recursively,
 // at most kMaxRestartDepth halvings, then NumericalFailure). No convergence
 // in max_outer_iterations: NumericalFailure (Uintah: ConvergenceFailure).
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -128,14 +139,15 @@ void IceComponent::assemble_pressure_matrix(double dt) {
   }
 }
 
-// rhs = -R(p) = sum_m A_m(u_f(p)) - sum theta kappa (p - p_eq); returns max |rhs|.
+// rhs = -R(p) = sum_m A_m(u_f(p)) + term1 - sum theta kappa (p - p_eq); returns max |rhs|.
 double IceComponent::pressure_residual(double dt) {
   const Grid& g = setup_.grid;
   sum_volume_flux_and_kappa(dt);
   double max_rhs = 0;
   for (std::size_t pi = 0; pi < g.patches.size(); ++pi)
     for_each_cell_serial(g.patches[pi].cells(), [&](int i, int j, int k) {
-      const double r = delP_Dilatate_[pi](i, j, k) -
+      const double term1 = model_src_ ? delP_MassX_[pi](i, j, k) : 0.0;
+      const double r = delP_Dilatate_[pi](i, j, k) + term1 -
                        sum_kappa_[pi](i, j, k) * (press_CC_[pi](i, j, k) - press_equil_CC_[pi](i, j, k));
       rhs_[pi](i, j, k) = r;
       max_rhs = std::max(max_rhs, std::abs(r));
@@ -179,12 +191,21 @@ void IceComponent::implicit_pressure_solve(double dt, int step) {
     halo_->exchange(press_CC_);
   }
   last_outer_iterations_ = it;
-  // delP_Dilatate = p - p_eq feeds the energy and specific-volume updates
-  // exactly as the explicit increment does.
-  for (std::size_t pi = 0; pi < g.patches.size(); ++pi)
+  // delP_Dilatate = p - p_eq - delP_MassX feeds the energy and
+  // specific-volume updates exactly as the explicit increment does.
+  for (std::size_t pi = 0; pi < g.patches.size(); ++pi) {
     for_each_cell(g.patches[pi].cells(), [&](int i, int j, int k) {
-      delP_Dilatate_[pi](i, j, k) = press_CC_[pi](i, j, k) - press_equil_CC_[pi](i, j, k);
+      double dp_massx = 0;
+      if (model_src_) {
+        dp_massx = delP_MassX_[pi](i, j, k) / sum_kappa_[pi](i, j, k);
+        delP_MassX_[pi](i, j, k) = dp_massx;
+        press_CC_[pi](i, j, k) = std::max(1e-12, press_CC_[pi](i, j, k));
+      }
+      delP_Dilatate_[pi](i, j, k) = press_CC_[pi](i, j, k) - press_equil_CC_[pi](i, j, k) - dp_massx;
     });
+    if (model_src_) apply_pressure_bc(pi, press_CC_);
+  }
+  if (model_src_) halo_->exchange(press_CC_);
 }
 
 }  // namespace tephra
