@@ -3,9 +3,13 @@
 ICE/JWLpp8mmRS.ups (JWL++ rate, Murnaghan reactant, JWLC products, air).
 
 Usage:
-  tests/bench/rate_stick_size_effect.py BUILD_DIR run  R_MM DX_MM [OUT_ROOT]
-  tests/bench/rate_stick_size_effect.py BUILD_DIR front R_MM DX_MM [OUT_ROOT]
+  tests/bench/rate_stick_size_effect.py BUILD_DIR run  R_MM DX_MM [OUT_ROOT] [--slab]
+  tests/bench/rate_stick_size_effect.py BUILD_DIR front R_MM DX_MM [OUT_ROOT] [--slab]
   tests/bench/rate_stick_size_effect.py BUILD_DIR plot  RESULTS.csv PNG   (pure Python PNG)
+
+--slab: a 2-D planar slab of half-thickness R_MM (one cell along z, z+ a
+symmetry plane) instead of the quarter-symmetric 3-D stick (ICE has no
+axisymmetric form); output directory slabR..._dx....
 
 R_MM = 0 is the "infinite-diameter" stick the manual describes: one cell
 across, the y+ and z+ faces made symmetry planes, the whole cross-section
@@ -37,21 +41,27 @@ DECK = os.path.join(DECKS, "inputs", "ICE", "JWLpp8mmRS.ups")
 SYMMETRY_FACE = '<Face side = "{s}">\n <BCType id = "all" var = "symmetry" label = "Symmetric"> </BCType>\n</Face>'
 
 
-def make_deck(r_mm, dx_mm):
+def make_deck(r_mm, dx_mm, slab=False):
+    """slab: a 2-D planar slab of half-thickness r_mm (one cell along z, the
+    z+ face a symmetry plane, so the deck's cylinder about the x axis cuts
+    the cells |y| < r_mm; ICE has no axisymmetric form), else the quarter-
+    symmetric 3-D stick of radius r_mm."""
     text = open(DECK, encoding="iso-8859-1").read()
     text = text.replace('href="inputs/', 'href="' + os.path.join(DECKS, "inputs") + "/")
     dx = dx_mm * 1e-3
     nx = int(round(0.1 / dx))
+    sym = ("y+", "z+") if r_mm == 0 else ("z+",) if slab else ()
+    for s in sym:
+        text = re.sub(r'<Face side = "%s">.*?</Face>' % re.escape(s), SYMMETRY_FACE.format(s=s), text,
+                      count=1, flags=re.S)
     if r_mm == 0:
         ny, width, radius = 1, dx, 1.0
-        for s in ("y+", "z+"):
-            text = re.sub(r'<Face side = "%s">.*?</Face>' % re.escape(s), SYMMETRY_FACE.format(s=s), text,
-                          count=1, flags=re.S)
     else:
         ny = int(math.ceil(15.0 / 8.0 * r_mm / dx_mm - 1e-9))
         width, radius = ny * dx, r_mm * 1e-3
-    text = re.sub(r"<upper>.*?</upper>", f"<upper> [1.e-1,{width!r},{width!r}] </upper>", text, count=1)
-    text = re.sub(r"<resolution>.*?</resolution>", f"<resolution> [{nx}, {ny}, {ny}] </resolution>", text, count=1)
+    nz, depth = (1, dx) if slab or r_mm == 0 else (ny, width)
+    text = re.sub(r"<upper>.*?</upper>", f"<upper> [1.e-1,{width!r},{depth!r}] </upper>", text, count=1)
+    text = re.sub(r"<resolution>.*?</resolution>", f"<resolution> [{nx}, {ny}, {nz}] </resolution>", text, count=1)
     text = re.sub(r"<radius>.*?</radius>", f"<radius> {radius!r} </radius>", text, count=1)
     saves = '<save label="F"/>\n<save label="press_CC"/>\n'
     text = re.sub(r"(<outputInterval>.*?</outputInterval>).*?(</DataArchiver>)", r"\1\n" + saves + r"\2", text,
@@ -59,8 +69,8 @@ def make_deck(r_mm, dx_mm):
     return text, nx, ny
 
 
-def out_dir(root, r_mm, dx_mm):
-    return os.path.join(root, f"R{r_mm:g}_dx{dx_mm:g}")
+def out_dir(root, r_mm, dx_mm, slab=False):
+    return os.path.join(root, ("slab" if slab and r_mm > 0 else "") + f"R{r_mm:g}_dx{dx_mm:g}")
 
 
 def extract_front(tephra, out, dx):
@@ -99,11 +109,13 @@ def main():
     tephra = os.path.join(build, "bin", "tephra")
     if mode == "plot":
         return plot(sys.argv[3], sys.argv[4])
-    r_mm, dx_mm = float(sys.argv[3]), float(sys.argv[4])
-    root = sys.argv[5] if len(sys.argv) > 5 else "/tmp/rate_stick"
-    out = out_dir(root, r_mm, dx_mm)
+    args = [a for a in sys.argv[3:] if a != "--slab"]
+    slab = "--slab" in sys.argv
+    r_mm, dx_mm = float(args[0]), float(args[1])
+    root = args[2] if len(args) > 2 else "/tmp/rate_stick"
+    out = out_dir(root, r_mm, dx_mm, slab)
     if mode == "run":
-        text, nx, ny = make_deck(r_mm, dx_mm)
+        text, nx, ny = make_deck(r_mm, dx_mm, slab)
         os.makedirs(root, exist_ok=True)
         deck = out + ".ups"
         open(deck, "w").write(text)
