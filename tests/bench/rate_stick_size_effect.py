@@ -135,6 +135,26 @@ REFERENCE = {
 D_CJ = 5899.3  # jwlc_cj.py on JWLEOSANFO.xml
 
 
+FONT = {  # 5x7 glyphs (rows top to bottom, bit 4 = leftmost column), tests/support/PngPlot.cpp's font
+    '0': (14, 17, 19, 21, 25, 17, 14), '1': (4, 12, 4, 4, 4, 4, 14), '2': (14, 17, 1, 2, 4, 8, 31),
+    '3': (31, 2, 4, 2, 1, 17, 14), '4': (2, 6, 10, 18, 31, 2, 2), '5': (31, 16, 30, 1, 1, 17, 14),
+    '6': (6, 8, 16, 30, 17, 17, 14), '7': (31, 1, 2, 4, 8, 8, 8), '8': (14, 17, 17, 14, 17, 17, 14),
+    '9': (14, 17, 17, 15, 1, 2, 12), 'A': (14, 17, 17, 31, 17, 17, 17), 'B': (30, 17, 17, 30, 17, 17, 30),
+    'C': (14, 17, 16, 16, 16, 17, 14), 'D': (28, 18, 17, 17, 17, 18, 28), 'E': (31, 16, 16, 30, 16, 16, 31),
+    'F': (31, 16, 16, 30, 16, 16, 16), 'G': (14, 17, 16, 23, 17, 17, 15), 'H': (17, 17, 17, 31, 17, 17, 17),
+    'I': (14, 4, 4, 4, 4, 4, 14), 'J': (7, 2, 2, 2, 2, 18, 12), 'K': (17, 18, 20, 24, 20, 18, 17),
+    'L': (16, 16, 16, 16, 16, 16, 31), 'M': (17, 27, 21, 21, 17, 17, 17), 'N': (17, 17, 25, 21, 19, 17, 17),
+    'O': (14, 17, 17, 17, 17, 17, 14), 'P': (30, 17, 17, 30, 16, 16, 16), 'Q': (14, 17, 17, 17, 21, 18, 13),
+    'R': (30, 17, 17, 30, 20, 18, 17), 'S': (15, 16, 16, 14, 1, 1, 30), 'T': (31, 4, 4, 4, 4, 4, 4),
+    'U': (17, 17, 17, 17, 17, 17, 14), 'V': (17, 17, 17, 17, 17, 10, 4), 'W': (17, 17, 17, 21, 21, 21, 10),
+    'X': (17, 17, 10, 4, 10, 17, 17), 'Y': (17, 17, 17, 10, 4, 4, 4), 'Z': (31, 1, 2, 4, 8, 16, 31),
+    '.': (0, 0, 0, 0, 0, 12, 12), '-': (0, 0, 0, 31, 0, 0, 0), '+': (0, 4, 4, 31, 4, 4, 0),
+    ':': (0, 12, 12, 0, 12, 12, 0), '/': (0, 1, 2, 4, 8, 16, 0), '(': (2, 4, 8, 8, 8, 4, 2),
+    ')': (8, 4, 2, 2, 2, 4, 8), '^': (4, 10, 17, 0, 0, 0, 0), ',': (0, 0, 0, 0, 12, 4, 8),
+    '=': (0, 0, 31, 0, 31, 0, 0), '_': (0, 0, 0, 0, 0, 0, 31), ' ': (0, 0, 0, 0, 0, 0, 0),
+}
+
+
 def write_png(path, w, h, px):
     """8-bit RGB PNG (PNG spec: signature, IHDR, one zlib IDAT, IEND)."""
     import struct
@@ -147,12 +167,14 @@ def write_png(path, w, h, px):
 
 
 def plot(results, png):
-    """RESULTS.csv: R_mm,dx_mm,D (R_mm = 0: infinite; D empty: no detonation).
+    """RESULTS.csv: R_mm,dx_mm,D[,geometry] (R_mm = 0: infinite; D empty: no detonation).
     Linear axes 1/R in [0, 0.25]/mm (ticks every 0.05) and D in [2000, 6500] m/s
     (ticks every 500), no text (key in docs/validation/rate-stick-size-effect.md):
     grey squares = Guilkey et al. 2007 simulation, black triangles = Souers
     et al. experiments, red dotted line = D_CJ, blue = Tephra dx = 2 mm,
-    green = Tephra dx = 1 mm, orange = dx = 0.5 mm."""
+    green = Tephra dx = 1 mm, orange = dx = 0.5 mm, purple = 0.25 mm; discs
+    and solid lines = 3-D quarter sticks at 1/R, squares and dotted lines =
+    2-D slabs (column geometry = slab, R_mm = half-thickness h) at 1/(2h)."""
     W, H, L, R, T, B = 720, 480, 60, 20, 20, 50
     px = bytearray([255] * (W * H * 3))
     X = lambda x: L + x / 0.25 * (W - L - R)
@@ -177,13 +199,31 @@ def plot(results, png):
                 if kind == "o" and a * a + b * b <= 16 or kind == "s" or kind == "^" and b >= 2 * abs(a) - 4:
                     dot(x + a, y + b, c)
 
+    def text(x, y, s, c=(0, 0, 0)):
+        for k, ch in enumerate(s.upper()):
+            for row, bits in enumerate(FONT.get(ch, FONT[" "])):
+                for col in range(5):
+                    if bits & (0x10 >> col):
+                        dot(x + 6 * k + col, y + row, c)
+
     grey, black = (140, 140, 140), (0, 0, 0)
+    colours = {2.0: (30, 90, 220), 1.0: (20, 160, 60), 0.5: (230, 130, 0), 0.25: (160, 0, 160)}
     for k in range(6):  # 1/R ticks and grid
         line(X(0.05 * k), T, X(0.05 * k), H - B, (225, 225, 225), dotted=True)
         line(X(0.05 * k), H - B, X(0.05 * k), H - B + 6, black)
     for k in range(10):  # D ticks and grid
         line(L, Y(2000 + 500 * k), W - R, Y(2000 + 500 * k), (225, 225, 225), dotted=True)
         line(L - 6, Y(2000 + 500 * k), L, Y(2000 + 500 * k), black)
+    for k in range(6):
+        text(X(0.05 * k) - 12, H - B + 10, f"{0.05 * k:.2f}")
+    for k in range(10):
+        text(L - 34, Y(2000 + 500 * k) - 3, f"{2000 + 500 * k}")
+    text((L + W) // 2 - 40, H - 18, "1/R (1/MM)")
+    text(L + 4, 6, "D (M/S)")
+    legend = [("GUILKEY 2007 SIM.", grey), ("SOUERS EXP.", black), ("D_CJ", (200, 0, 0))] + \
+             [(f"DX = {dx:g} MM", c) for dx, c in colours.items()] + [("DISC: 3-D AT 1/R", black), ("SQUARE: SLAB AT 1/(2H)", black)]
+    for k, (name, c) in enumerate(legend):
+        text(W - R - 140, H - B - 110 + 11 * k, name, c)
     line(L, H - B, W - R, H - B, black)
     line(L, T, L, H - B, black)
     line(X(0), Y(D_CJ), X(0.25), Y(D_CJ), (200, 0, 0), dotted=True)
@@ -194,15 +234,22 @@ def plot(results, png):
         marker(X(a), Y(d), grey, "s")
     for a, d in REFERENCE["souers"]:
         marker(X(a), Y(d), black, "^")
-    colours = {2.0: (30, 90, 220), 1.0: (20, 160, 60), 0.5: (230, 130, 0)}
     rows = [r for r in csv.DictReader(open(results)) if r["D"].strip()]
-    for dx, c in colours.items():
-        pts = sorted((1 / float(r["R_mm"]) if float(r["R_mm"]) > 0 else 0.0, float(r["D"]))
-                     for r in rows if float(r["dx_mm"]) == dx)
-        for (a, d), (b, e) in zip(pts, pts[1:]):
-            line(X(a), Y(d), X(b), Y(e), c)
-        for a, d in pts:
-            marker(X(a), Y(d), c, "o")
+    # 3-D sticks (and R = 0, the 1-D stick) at 1/R: solid lines, discs. Slabs of
+    # half-thickness h at 1/(2h) (the cylinder radius with the same front
+    # curvature on the axis, docs/validation/rate-stick-size-effect.md):
+    # dotted lines, squares; the 1-D point (R = 0) starts both series.
+    for slab in (False, True):
+        for dx, c in colours.items():
+            pts = sorted((0.0 if float(r["R_mm"]) == 0 else 1 / ((2 if slab else 1) * float(r["R_mm"])), float(r["D"]))
+                         for r in rows if float(r["dx_mm"]) == dx
+                         and (float(r["R_mm"]) == 0 or (r.get("geometry", "").strip() == "slab") == slab))
+            if slab and all(a == 0 for a, _ in pts):
+                continue
+            for (a, d), (b, e) in zip(pts, pts[1:]):
+                line(X(a), Y(d), X(b), Y(e), c, dotted=slab)
+            for a, d in pts:
+                marker(X(a), Y(d), c, "s" if slab and a > 0 else "o")
     write_png(png, W, H, px)
 
 
