@@ -3,6 +3,8 @@
 #include <cmath>
 #include <limits>
 
+#include "models/eos/IdealGas.h"
+
 namespace tephra {
 
 namespace {
@@ -17,6 +19,28 @@ struct EquilibrationScratch {
   std::vector<char> done;              // per active cell: converged in this iteration
 };
 
+// out[a] = the state of material m at (rho[a], T[a]); cell[a] (or a when
+// cell is null) is the index of that cell in m's spans (for a per-cell gas).
+void evaluate(const EquilibrationMaterial& m, std::span<const double> rho, std::span<const double> T,
+              const std::size_t* cell, std::span<EosState> out) {
+  if (m.cell_gamma.empty()) return m.eos->evaluate(rho, T, out);
+  for (std::size_t a = 0; a < out.size(); ++a) {
+    const std::size_t i = cell ? cell[a] : a;
+    out[a] = IdealGas::state(m.cell_gamma[i], m.cell_cv[i], rho[a], T[a]);
+  }
+}
+
+// rho[a] = rho(p[a], T[a]) of material m; for a per-cell gas
+// rho = p / ((gamma_i - 1) cv_i T) (IdealGas.h).
+void density(const EquilibrationMaterial& m, std::span<const double> p, std::span<const double> T,
+             const std::size_t* cell, std::span<double> rho) {
+  if (m.cell_gamma.empty()) return m.eos->density(p, T, rho);
+  for (std::size_t a = 0; a < rho.size(); ++a) {
+    const std::size_t i = cell ? cell[a] : a;
+    rho[a] = p[a] / ((m.cell_gamma[i] - 1.0) * m.cell_cv[i] * T[a]);
+  }
+}
+
 }  // namespace
 
 EquilibrationResult equilibrate_pressure(std::vector<EquilibrationMaterial>& mats, std::span<double> press,
@@ -29,7 +53,7 @@ EquilibrationResult equilibrate_pressure(std::vector<EquilibrationMaterial>& mat
   if (nm == 1) {
     EquilibrationMaterial& m = mats[0];
     const std::span<EosState> st(s.states.data(), n);
-    m.eos->evaluate(m.rho_micro, m.temp, st);
+    evaluate(m, m.rho_micro, m.temp, nullptr, st);
     for (std::size_t i = 0; i < n; ++i) {
       press[i] = st[i].p;
       m.vol_frac[i] = 1.0;
@@ -63,7 +87,7 @@ EquilibrationResult equilibrate_pressure(std::vector<EquilibrationMaterial>& mat
       const EquilibrationMaterial& m = mats[k];
       const std::span<EosState> st(s.states.data() + k * n, na);
       if (all) {
-        m.eos->evaluate(m.rho_micro, m.temp, st);
+        evaluate(m, m.rho_micro, m.temp, nullptr, st);
         continue;
       }
       double* r = s.rho.data() + k * n;
@@ -72,7 +96,7 @@ EquilibrationResult equilibrate_pressure(std::vector<EquilibrationMaterial>& mat
         r[a] = m.rho_micro[s.active[a]];
         T[a] = m.temp[s.active[a]];
       }
-      m.eos->evaluate({r, na}, {T, na}, st);
+      evaluate(m, {r, na}, {T, na}, s.active.data(), st);
     }
     for (std::size_t a = 0; a < na; ++a) {
       const std::size_t i = s.active[a];
@@ -103,14 +127,14 @@ EquilibrationResult equilibrate_pressure(std::vector<EquilibrationMaterial>& mat
     for (std::size_t k = 0; k < nm; ++k) {
       EquilibrationMaterial& m = mats[k];
       if (all) {
-        m.eos->density(press, m.temp, m.rho_micro);
+        density(m, press, m.temp, nullptr, m.rho_micro);
         for (std::size_t i = 0; i < n; ++i) m.vol_frac[i] = m.rho_CC[i] / m.rho_micro[i];
         continue;
       }
       double* r = s.rho.data() + k * n;
       double* T = s.temp.data() + k * n;
       for (std::size_t a = 0; a < na; ++a) T[a] = m.temp[s.active[a]];
-      m.eos->density({s.press.data(), na}, {T, na}, {r, na});
+      density(m, {s.press.data(), na}, {T, na}, s.active.data(), {r, na});
       for (std::size_t a = 0; a < na; ++a) {
         const std::size_t i = s.active[a];
         m.rho_micro[i] = r[a];
@@ -129,7 +153,7 @@ EquilibrationResult equilibrate_pressure(std::vector<EquilibrationMaterial>& mat
   }
   for (std::size_t k = 0; k < nm; ++k) {
     const std::span<EosState> st(s.states.data() + k * n, n);
-    mats[k].eos->evaluate(mats[k].rho_micro, mats[k].temp, st);
+    evaluate(mats[k], mats[k].rho_micro, mats[k].temp, nullptr, st);
     for (std::size_t i = 0; i < n; ++i) mats[k].c2[i] = st[i].c2;
   }
   return result;

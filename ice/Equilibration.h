@@ -22,6 +22,10 @@ struct EquilibrationMaterial {
   std::span<const double> rho_CC, temp;  // in
   std::span<double> rho_micro;           // in: starting guess (1/sp_vol); out
   std::span<double> vol_frac, c2;        // out
+  // Optional per-cell ideal gas (a model's mixture, e.g. SimpleRxn): when
+  // both are non-empty the material is p = (gamma_i - 1) rho cv_i T in cell
+  // i (models/eos/IdealGas.h with the cell's constants) and `eos` is unused.
+  std::span<const double> cell_gamma, cell_cv;
 };
 
 struct EquilibrationResult {

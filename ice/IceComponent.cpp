@@ -144,12 +144,31 @@ void IceComponent::initialize() {
     lagrangian_fill_(*this);
     fluids_fill_volume_left_by_solids();
   }
+  set_up_cell_ideal_gas();
   compute_equilibration_pressure(0);
   for (std::size_t pi = 0; pi < g.patches.size(); ++pi)
     press_CC_[pi] = press_equil_CC_[pi];
   for (std::size_t m = 0; m < nm; ++m) apply_state_bcs(m);
   allocate_model_storage();
   check_state(0, "initialization");
+}
+
+// Models that make a material a per-cell ideal gas (SimpleRxn) are
+// initialised here, before the first equilibration, so that the initial
+// mixture density and the cell gamma and cv enter it (allocate_model_storage
+// initialises them again, which recomputes the same fields).
+void IceComponent::set_up_cell_ideal_gas() {
+  cell_gas_.assign(mats_.size(), nullptr);
+  for (const IceModelP& model : setup_.models)
+    if (const CellIdealGas* gas = model->cell_ideal_gas()) {
+      cell_gas_[gas->material] = model.get();  // parse_ice_models allows one per material
+      model->initialize(setup_.grid, mats_);
+      model->initialize_state(mats_);
+    }
+}
+
+void IceComponent::fill_cell_gas_cv(std::size_t m, std::size_t pi) {
+  if (m < cell_gas_.size() && cell_gas_[m]) cv_CC_[m][pi] = (*cell_gas_[m]->cell_ideal_gas()->cv)[pi];
 }
 
 // MPMICE initial state: the solids' cell volume fraction theta_s = sum over

@@ -157,6 +157,10 @@ class IceComponent final : public Component {
   // Lagrangian quantities of the step, per material (scratch): mass, and the
   // specific quantities advected with it (velocity, temperature, specific volume).
   std::vector<CellScalars> mass_L_, temp_L_, spv_L_, cv_CC_;  // cv_CC_: c_v per cell for the step
+  // Per material: the model that makes it a per-cell ideal gas (SimpleRxn), or null.
+  std::vector<IceModel*> cell_gas_;
+  void set_up_cell_ideal_gas();
+  void fill_cell_gas_cv(std::size_t m, std::size_t pi);  // cv_CC_ = the model's cv, if any
   std::vector<CellScalars> work_corr_;  // face-pressure minus cell-pressure work (IceEnergy.cpp)
   std::vector<CellVectors> vel_L_;
   FaceScalars flux_, flux2_;

@@ -51,6 +51,7 @@ void IceComponent::compute_model_sources(double dt, int step) {
       for_each_cell(g.patches[pi].cells_with_extra(), [&](int i, int j, int k) {
         cv_CC_[m][pi](i, j, k) = cv_model ? cv_model->cv(mats_[m].temp_CC[pi](i, j, k)) : cv_const;
       });
+    for (std::size_t pi = 0; pi < g.patches.size(); ++pi) fill_cell_gas_cv(m, pi);
   }
   const IceModelInput in{g, setup_.materials, mats_, cv_CC_, press_equil_CC_, time_, dt, step};
   for (const IceModelP& model : setup_.models) model->compute_sources(in, s);

@@ -208,6 +208,9 @@ std::map<std::string, std::vector<double>> IceComponent::reductions(const std::s
     for (std::size_t m = 0; m < mats_.size(); ++m) {
       if (setup_.materials[m].lagrangian) continue;  // MPMICE solids: counted by their particles
       const double cv = setup_.materials[m].cv;
+      // A per-cell ideal gas (SimpleRxn): the mixture's cv of the cell.
+      const GridArray<double>* cell_cv =
+          m < cell_gas_.size() && cell_gas_[m] ? &(*cell_gas_[m]->cell_ideal_gas()->cv)[pi] : nullptr;
       const IndexRange r = g.patches[pi].cells();
       for (int k = r.lo[2]; k < r.hi[2]; ++k)
         for (int j = r.lo[1]; j < r.hi[1]; ++j)
@@ -217,7 +220,7 @@ std::map<std::string, std::vector<double>> IceComponent::reductions(const std::s
             mass += M;
             mom += M * u;
             ke += 0.5 * M * u.squaredNorm();
-            ie += M * cv * mats_[m].temp_CC[pi](i, j, k);
+            ie += M * (cell_cv ? (*cell_cv)(i, j, k) : cv) * mats_[m].temp_CC[pi](i, j, k);
           }
     }
     partials.push_back({g.patches[pi].id, {mass, ke, ie, mom[0], mom[1], mom[2]}});

@@ -50,7 +50,12 @@ void IceComponent::compute_equilibration_pressure(int step) {
         const double* sp_vol = &f.sp_vol_CC[pi](i0, j, k);
         for (std::size_t c = 0; c < n; ++c) rho_micro[c] = 1.0 / sp_vol[c];
         em[m] = {setup_.materials[m].eos.get(), {&f.rho_CC[pi](i0, j, k), n}, {&f.temp_CC[pi](i0, j, k), n},
-                 {rho_micro, n}, {&f.vol_frac_CC[pi](i0, j, k), n}, {c2.data() + m * n, n}};
+                 {rho_micro, n}, {&f.vol_frac_CC[pi](i0, j, k), n}, {c2.data() + m * n, n}, {}, {}};
+        if (m < cell_gas_.size() && cell_gas_[m]) {  // SimpleRxn: gamma and cv of the cell's mixture
+          const CellIdealGas& gas = *cell_gas_[m]->cell_ideal_gas();
+          em[m].cell_gamma = {&(*gas.gamma)[pi](i0, j, k), n};
+          em[m].cell_cv = {&(*gas.cv)[pi](i0, j, k), n};
+        }
       }
       const EquilibrationResult r = equilibrate_pressure(em, {press, n}, setup_.max_iter_equilibration);
       if (!r.converged) {
@@ -357,6 +362,7 @@ void IceComponent::lagrangian_values_and_exchange(double dt) {
         else
           for (int c = 0; c < ne; ++c) cv[c] = cv_const;
       });
+      fill_cell_gas_cv(m, pi);
       compute_diffusion_sources(m, pi);
       const IceModelSources* ms = model_src_.get();
       const double min_mass = setup_.materials[m].tiny_rho * setup_.materials[m].sources[0].density * V;
@@ -676,11 +682,29 @@ void IceComponent::advect_and_advance(double dt, int step) {
         }
       });
     }
+    // Model scalars first (a per-cell ideal gas needs its new cv below).
+    if (model_src_) advect_model_scalars(m, dt);
+    IceModel* gas = m < cell_gas_.size() ? cell_gas_[m] : nullptr;
+    if (gas) {
+      // Per-cell cv (SimpleRxn): the content is the energy M cv_L T_L, and
+      // T = (M cv T)_new / (M_new cv_new), cv_new from the advected mixture
+      // fraction (Uintah's computeSpecificHeat after advection).
+      for (std::size_t pi = 0; pi < g.patches.size(); ++pi) {
+        double* t = temp_L_[m][pi].data();
+        const double* cv = cv_CC_[m][pi].data();
+        for (std::size_t c = 0; c < temp_L_[m][pi].size(); ++c) t[c] *= cv[c];
+      }
+      gas->update_cell_properties();
+    }
     // Temperature and specific volume, advected as the contents M T and M v (IceAdvectContent.cpp).
     advect_content(m, temp_L_[m], f.temp_CC, dt);
+    if (gas) {
+      const CellScalars& cv_new = *gas->cell_ideal_gas()->cv;
+      for (std::size_t pi = 0; pi < g.patches.size(); ++pi)
+        for_each_cell(g.patches[pi].cells(), [&](int i, int j, int k) { f.temp_CC[pi](i, j, k) /= cv_new[pi](i, j, k); });
+    }
     advect_content(m, spv_L_[m], f.sp_vol_CC, dt);
     if (energy != EnergyCorrection::None) add_advected_kinetic_energy_loss(m);  // IceEnergy.cpp
-    if (model_src_) advect_model_scalars(m, dt);
     apply_state_bcs(m);
   }
   if (energy == EnergyCorrection::Mixture) add_mixture_advected_kinetic_energy_loss();  // IceEnergy.cpp

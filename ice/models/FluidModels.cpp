@@ -178,18 +178,12 @@ class PassiveScalar final : public IceModel, public SourceMaterials {
       for_each_cell_serial(g.patches[pi].cells(), [&](int i, int j, int k) {
         const auto& q = q_[pi];
         double s = f * q(i, j, k);
-        if (diffusivity_ > 0) {
-          const double c = q(i, j, k);
-          s += w[0] * (q(i + 1, j, k) - 2 * c + q(i - 1, j, k)) + w[1] * (q(i, j + 1, k) - 2 * c + q(i, j - 1, k)) +
-               w[2] * (q(i, j, k + 1) - 2 * c + q(i, j, k - 1));
-        }
+        if (diffusivity_ > 0) s += scalar_laplacian_step(q, w, i, j, k);
         src_[pi](i, j, k) = s;
       });
   }
   double stable_timestep() const override {
-    if (diffusivity_ <= 0 || !grid_) return std::numeric_limits<double>::infinity();
-    const Vec3& dx = grid_->dx;
-    return 0.5 / (diffusivity_ * (1 / (dx[0] * dx[0]) + 1 / (dx[1] * dx[1]) + 1 / (dx[2] * dx[2])));
+    return grid_ ? scalar_diffusion_stable_timestep(diffusivity_, grid_->dx) : std::numeric_limits<double>::infinity();
   }
   std::vector<TransportedScalar> transported() override { return {{m_, &q_, &src_}}; }
   std::set<std::string> labels() const override { return {name_, "totalSum_" + name_}; }

@@ -67,6 +67,16 @@ struct ModelField {
   const CellScalars* field = nullptr;
 };
 
+// A per-cell ideal-gas mixture a model imposes on one ideal_gas material
+// (SimpleRxn): c_v and gamma per cell replace the material's <specific_heat>
+// and <gamma> in the EOS p = (gamma - 1) rho cv T, in the speed of sound and
+// in the energy M cv T (every stored cell, extra cells too).
+struct CellIdealGas {
+  std::size_t material = 0;
+  const CellScalars* cv = nullptr;
+  const CellScalars* gamma = nullptr;
+};
+
 class IceModel {
  public:
   virtual ~IceModel() = default;
@@ -75,6 +85,13 @@ class IceModel {
   virtual void initialize(const Grid& grid, const std::vector<IceMaterialFields>& mats) = 0;
   virtual void compute_sources(const IceModelInput& in, IceModelSources& out) = 0;
   virtual std::vector<TransportedScalar> transported() { return {}; }
+  // Mixture properties (null when the model has none). The step calls
+  // update_cell_properties() after the model's scalars are advected, and
+  // initialize_state() once after initialize(), before the first
+  // equilibration (to set the initial mixture density).
+  virtual const CellIdealGas* cell_ideal_gas() const { return nullptr; }
+  virtual void update_cell_properties() {}
+  virtual void initialize_state(std::vector<IceMaterialFields>&) {}
   // The largest stable time step of the model's own explicit terms (e.g. the
   // forward-Euler limit of a scalar's diffusion); infinity when it has none.
   virtual double stable_timestep() const { return std::numeric_limits<double>::infinity(); }

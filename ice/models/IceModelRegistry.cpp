@@ -17,6 +17,7 @@ const std::map<std::string, Factory>& factories() {
       {"IandG", make_ignition_growth}, {"JWLpp", make_jwlpp},
       {"LightTime", make_light_time},  {"PassiveScalar", make_passive_scalar},
       {"ZeroOrder", make_zero_order},  {"mass_momentum_energy_src", make_mass_mom_eng_src},
+      {"SimpleRxn", make_simple_rxn},
   };
   return f;
 }
@@ -25,7 +26,7 @@ const std::map<std::string, Factory>& factories() {
 // Tephra does not run yet (exit 3). The EOS names in that list are not
 // models at all (Vaango's schema lists them there by mistake).
 const std::vector<std::string>& vaango_types() {
-  static const std::vector<std::string> v = {"SimpleRxn", "AdiabaticTable", "Radiation", "Simple_Burn",
+  static const std::vector<std::string> v = {"AdiabaticTable", "Radiation", "Simple_Burn",
                                              "Steady_Burn", "Test", "Unsteady_Burn",
                                              "flameSheet_rxn", "DDT0", "DDT1", "SolidReactionModel", "MesoBurn"};
   return v;
@@ -86,6 +87,11 @@ std::vector<IceModelP> parse_ice_models(const DeckNode& root, const IceSetup& se
     auto it = factories().find(type);
     if (it != factories().end()) {
       out.push_back(it->second(m, setup));
+      // A per-cell ideal gas (SimpleRxn) owns its material's gamma and cv: one model per material.
+      if (const CellIdealGas* gas = out.back()->cell_ideal_gas())
+        for (std::size_t o = 0; o + 1 < out.size(); ++o)
+          if (const CellIdealGas* other = out[o]->cell_ideal_gas(); other && other->material == gas->material)
+            m.fail("two models set the mixture properties of ICE material " + std::to_string(gas->material));
       continue;
     }
     const auto& v = vaango_types();

@@ -2,6 +2,7 @@
 // Helpers shared by the ICE source models: reading a model's parameters from
 // the deck (with every child checked), naming materials, and moving reactant
 // into product in one cell.
+#include <limits>
 #include <set>
 #include <string>
 
@@ -78,6 +79,21 @@ inline void convert_mass(IceModelSources& s, std::size_t pi, const IntVec3& c, s
   s.sp_vol[m1][pi](c) += dm * v;
 }
 
+// Forward-Euler diffusion of a cell scalar q (PassiveScalar, SimpleRxn):
+// the source over one step in cell (i, j, k) with the 7-point Laplacian,
+//   sum_d w_d (q_{+d} - 2 q + q_{-d}),   w_d = dt D / dx_d^2,
+// so that where rho is uniform and the gas at rest q_t = D lap q. Stable for
+// dt <= 1 / (2 D sum_d 1/dx_d^2) (infinity when D = 0).
+inline double scalar_laplacian_step(const GridArray<double>& q, const Vec3& w, int i, int j, int k) {
+  const double c = q(i, j, k);
+  return w[0] * (q(i + 1, j, k) - 2 * c + q(i - 1, j, k)) + w[1] * (q(i, j + 1, k) - 2 * c + q(i, j - 1, k)) +
+         w[2] * (q(i, j, k + 1) - 2 * c + q(i, j, k - 1));
+}
+inline double scalar_diffusion_stable_timestep(double D, const Vec3& dx) {
+  if (D <= 0) return std::numeric_limits<double>::infinity();
+  return 0.5 / (D * (1 / (dx[0] * dx[0]) + 1 / (dx[1] * dx[1]) + 1 / (dx[2] * dx[2])));
+}
+
 // Factories (ice/models/*.cpp).
 IceModelP make_light_time(const DeckNode& model, const IceSetup& setup);
 IceModelP make_jwlpp(const DeckNode& model, const IceSetup& setup);
@@ -85,6 +101,7 @@ IceModelP make_zero_order(const DeckNode& model, const IceSetup& setup);
 IceModelP make_ignition_growth(const DeckNode& model, const IceSetup& setup);
 IceModelP make_add_heat(const DeckNode& add_heat, const IceSetup& setup);
 IceModelP make_passive_scalar(const DeckNode& model, const IceSetup& setup);
+IceModelP make_simple_rxn(const DeckNode& model, const IceSetup& setup);
 IceModelP make_mass_mom_eng_src(const DeckNode& model, const IceSetup& setup);
 
 }  // namespace tephra

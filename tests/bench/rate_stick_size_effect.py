@@ -3,9 +3,13 @@
 ICE/JWLpp8mmRS.ups (JWL++ rate, Murnaghan reactant, JWLC products, air).
 
 Usage:
-  tests/bench/rate_stick_size_effect.py BUILD_DIR run  R_MM DX_MM [OUT_ROOT]
-  tests/bench/rate_stick_size_effect.py BUILD_DIR front R_MM DX_MM [OUT_ROOT]
+  tests/bench/rate_stick_size_effect.py BUILD_DIR run  R_MM DX_MM [OUT_ROOT] [--slab]
+  tests/bench/rate_stick_size_effect.py BUILD_DIR front R_MM DX_MM [OUT_ROOT] [--slab]
   tests/bench/rate_stick_size_effect.py BUILD_DIR plot  RESULTS.csv PNG   (pure Python PNG)
+
+--slab: a 2-D planar slab of half-thickness R_MM (one cell along z, z+ a
+symmetry plane) instead of the quarter-symmetric 3-D stick (ICE has no
+axisymmetric form); output directory slabR..._dx....
 
 R_MM = 0 is the "infinite-diameter" stick the manual describes: one cell
 across, the y+ and z+ faces made symmetry planes, the whole cross-section
@@ -37,21 +41,27 @@ DECK = os.path.join(DECKS, "inputs", "ICE", "JWLpp8mmRS.ups")
 SYMMETRY_FACE = '<Face side = "{s}">\n <BCType id = "all" var = "symmetry" label = "Symmetric"> </BCType>\n</Face>'
 
 
-def make_deck(r_mm, dx_mm):
+def make_deck(r_mm, dx_mm, slab=False):
+    """slab: a 2-D planar slab of half-thickness r_mm (one cell along z, the
+    z+ face a symmetry plane, so the deck's cylinder about the x axis cuts
+    the cells |y| < r_mm; ICE has no axisymmetric form), else the quarter-
+    symmetric 3-D stick of radius r_mm."""
     text = open(DECK, encoding="iso-8859-1").read()
     text = text.replace('href="inputs/', 'href="' + os.path.join(DECKS, "inputs") + "/")
     dx = dx_mm * 1e-3
     nx = int(round(0.1 / dx))
+    sym = ("y+", "z+") if r_mm == 0 else ("z+",) if slab else ()
+    for s in sym:
+        text = re.sub(r'<Face side = "%s">.*?</Face>' % re.escape(s), SYMMETRY_FACE.format(s=s), text,
+                      count=1, flags=re.S)
     if r_mm == 0:
         ny, width, radius = 1, dx, 1.0
-        for s in ("y+", "z+"):
-            text = re.sub(r'<Face side = "%s">.*?</Face>' % re.escape(s), SYMMETRY_FACE.format(s=s), text,
-                          count=1, flags=re.S)
     else:
         ny = int(math.ceil(15.0 / 8.0 * r_mm / dx_mm - 1e-9))
         width, radius = ny * dx, r_mm * 1e-3
-    text = re.sub(r"<upper>.*?</upper>", f"<upper> [1.e-1,{width!r},{width!r}] </upper>", text, count=1)
-    text = re.sub(r"<resolution>.*?</resolution>", f"<resolution> [{nx}, {ny}, {ny}] </resolution>", text, count=1)
+    nz, depth = (1, dx) if slab or r_mm == 0 else (ny, width)
+    text = re.sub(r"<upper>.*?</upper>", f"<upper> [1.e-1,{width!r},{depth!r}] </upper>", text, count=1)
+    text = re.sub(r"<resolution>.*?</resolution>", f"<resolution> [{nx}, {ny}, {nz}] </resolution>", text, count=1)
     text = re.sub(r"<radius>.*?</radius>", f"<radius> {radius!r} </radius>", text, count=1)
     saves = '<save label="F"/>\n<save label="press_CC"/>\n'
     text = re.sub(r"(<outputInterval>.*?</outputInterval>).*?(</DataArchiver>)", r"\1\n" + saves + r"\2", text,
@@ -59,8 +69,8 @@ def make_deck(r_mm, dx_mm):
     return text, nx, ny
 
 
-def out_dir(root, r_mm, dx_mm):
-    return os.path.join(root, f"R{r_mm:g}_dx{dx_mm:g}")
+def out_dir(root, r_mm, dx_mm, slab=False):
+    return os.path.join(root, ("slab" if slab and r_mm > 0 else "") + f"R{r_mm:g}_dx{dx_mm:g}")
 
 
 def extract_front(tephra, out, dx):
@@ -99,11 +109,13 @@ def main():
     tephra = os.path.join(build, "bin", "tephra")
     if mode == "plot":
         return plot(sys.argv[3], sys.argv[4])
-    r_mm, dx_mm = float(sys.argv[3]), float(sys.argv[4])
-    root = sys.argv[5] if len(sys.argv) > 5 else "/tmp/rate_stick"
-    out = out_dir(root, r_mm, dx_mm)
+    args = [a for a in sys.argv[3:] if a != "--slab"]
+    slab = "--slab" in sys.argv
+    r_mm, dx_mm = float(args[0]), float(args[1])
+    root = args[2] if len(args) > 2 else "/tmp/rate_stick"
+    out = out_dir(root, r_mm, dx_mm, slab)
     if mode == "run":
-        text, nx, ny = make_deck(r_mm, dx_mm)
+        text, nx, ny = make_deck(r_mm, dx_mm, slab)
         os.makedirs(root, exist_ok=True)
         deck = out + ".ups"
         open(deck, "w").write(text)
@@ -123,6 +135,26 @@ REFERENCE = {
 D_CJ = 5899.3  # jwlc_cj.py on JWLEOSANFO.xml
 
 
+FONT = {  # 5x7 glyphs (rows top to bottom, bit 4 = leftmost column), tests/support/PngPlot.cpp's font
+    '0': (14, 17, 19, 21, 25, 17, 14), '1': (4, 12, 4, 4, 4, 4, 14), '2': (14, 17, 1, 2, 4, 8, 31),
+    '3': (31, 2, 4, 2, 1, 17, 14), '4': (2, 6, 10, 18, 31, 2, 2), '5': (31, 16, 30, 1, 1, 17, 14),
+    '6': (6, 8, 16, 30, 17, 17, 14), '7': (31, 1, 2, 4, 8, 8, 8), '8': (14, 17, 17, 14, 17, 17, 14),
+    '9': (14, 17, 17, 15, 1, 2, 12), 'A': (14, 17, 17, 31, 17, 17, 17), 'B': (30, 17, 17, 30, 17, 17, 30),
+    'C': (14, 17, 16, 16, 16, 17, 14), 'D': (28, 18, 17, 17, 17, 18, 28), 'E': (31, 16, 16, 30, 16, 16, 31),
+    'F': (31, 16, 16, 30, 16, 16, 16), 'G': (14, 17, 16, 23, 17, 17, 15), 'H': (17, 17, 17, 31, 17, 17, 17),
+    'I': (14, 4, 4, 4, 4, 4, 14), 'J': (7, 2, 2, 2, 2, 18, 12), 'K': (17, 18, 20, 24, 20, 18, 17),
+    'L': (16, 16, 16, 16, 16, 16, 31), 'M': (17, 27, 21, 21, 17, 17, 17), 'N': (17, 17, 25, 21, 19, 17, 17),
+    'O': (14, 17, 17, 17, 17, 17, 14), 'P': (30, 17, 17, 30, 16, 16, 16), 'Q': (14, 17, 17, 17, 21, 18, 13),
+    'R': (30, 17, 17, 30, 20, 18, 17), 'S': (15, 16, 16, 14, 1, 1, 30), 'T': (31, 4, 4, 4, 4, 4, 4),
+    'U': (17, 17, 17, 17, 17, 17, 14), 'V': (17, 17, 17, 17, 17, 10, 4), 'W': (17, 17, 17, 21, 21, 21, 10),
+    'X': (17, 17, 10, 4, 10, 17, 17), 'Y': (17, 17, 17, 10, 4, 4, 4), 'Z': (31, 1, 2, 4, 8, 16, 31),
+    '.': (0, 0, 0, 0, 0, 12, 12), '-': (0, 0, 0, 31, 0, 0, 0), '+': (0, 4, 4, 31, 4, 4, 0),
+    ':': (0, 12, 12, 0, 12, 12, 0), '/': (0, 1, 2, 4, 8, 16, 0), '(': (2, 4, 8, 8, 8, 4, 2),
+    ')': (8, 4, 2, 2, 2, 4, 8), '^': (4, 10, 17, 0, 0, 0, 0), ',': (0, 0, 0, 0, 12, 4, 8),
+    '=': (0, 0, 31, 0, 31, 0, 0), '_': (0, 0, 0, 0, 0, 0, 31), ' ': (0, 0, 0, 0, 0, 0, 0),
+}
+
+
 def write_png(path, w, h, px):
     """8-bit RGB PNG (PNG spec: signature, IHDR, one zlib IDAT, IEND)."""
     import struct
@@ -135,12 +167,14 @@ def write_png(path, w, h, px):
 
 
 def plot(results, png):
-    """RESULTS.csv: R_mm,dx_mm,D (R_mm = 0: infinite; D empty: no detonation).
+    """RESULTS.csv: R_mm,dx_mm,D[,geometry] (R_mm = 0: infinite; D empty: no detonation).
     Linear axes 1/R in [0, 0.25]/mm (ticks every 0.05) and D in [2000, 6500] m/s
     (ticks every 500), no text (key in docs/validation/rate-stick-size-effect.md):
     grey squares = Guilkey et al. 2007 simulation, black triangles = Souers
     et al. experiments, red dotted line = D_CJ, blue = Tephra dx = 2 mm,
-    green = Tephra dx = 1 mm, orange = dx = 0.5 mm."""
+    green = Tephra dx = 1 mm, orange = dx = 0.5 mm, purple = 0.25 mm; discs
+    and solid lines = 3-D quarter sticks at 1/R, squares and dotted lines =
+    2-D slabs (column geometry = slab, R_mm = half-thickness h) at 1/(2h)."""
     W, H, L, R, T, B = 720, 480, 60, 20, 20, 50
     px = bytearray([255] * (W * H * 3))
     X = lambda x: L + x / 0.25 * (W - L - R)
@@ -165,13 +199,31 @@ def plot(results, png):
                 if kind == "o" and a * a + b * b <= 16 or kind == "s" or kind == "^" and b >= 2 * abs(a) - 4:
                     dot(x + a, y + b, c)
 
+    def text(x, y, s, c=(0, 0, 0)):
+        for k, ch in enumerate(s.upper()):
+            for row, bits in enumerate(FONT.get(ch, FONT[" "])):
+                for col in range(5):
+                    if bits & (0x10 >> col):
+                        dot(x + 6 * k + col, y + row, c)
+
     grey, black = (140, 140, 140), (0, 0, 0)
+    colours = {2.0: (30, 90, 220), 1.0: (20, 160, 60), 0.5: (230, 130, 0), 0.25: (160, 0, 160)}
     for k in range(6):  # 1/R ticks and grid
         line(X(0.05 * k), T, X(0.05 * k), H - B, (225, 225, 225), dotted=True)
         line(X(0.05 * k), H - B, X(0.05 * k), H - B + 6, black)
     for k in range(10):  # D ticks and grid
         line(L, Y(2000 + 500 * k), W - R, Y(2000 + 500 * k), (225, 225, 225), dotted=True)
         line(L - 6, Y(2000 + 500 * k), L, Y(2000 + 500 * k), black)
+    for k in range(6):
+        text(X(0.05 * k) - 12, H - B + 10, f"{0.05 * k:.2f}")
+    for k in range(10):
+        text(L - 34, Y(2000 + 500 * k) - 3, f"{2000 + 500 * k}")
+    text((L + W) // 2 - 40, H - 18, "1/R (1/MM)")
+    text(L + 4, 6, "D (M/S)")
+    legend = [("GUILKEY 2007 SIM.", grey), ("SOUERS EXP.", black), ("D_CJ", (200, 0, 0))] + \
+             [(f"DX = {dx:g} MM", c) for dx, c in colours.items()] + [("DISC: 3-D AT 1/R", black), ("SQUARE: SLAB AT 1/(2H)", black)]
+    for k, (name, c) in enumerate(legend):
+        text(W - R - 140, H - B - 110 + 11 * k, name, c)
     line(L, H - B, W - R, H - B, black)
     line(L, T, L, H - B, black)
     line(X(0), Y(D_CJ), X(0.25), Y(D_CJ), (200, 0, 0), dotted=True)
@@ -182,15 +234,22 @@ def plot(results, png):
         marker(X(a), Y(d), grey, "s")
     for a, d in REFERENCE["souers"]:
         marker(X(a), Y(d), black, "^")
-    colours = {2.0: (30, 90, 220), 1.0: (20, 160, 60), 0.5: (230, 130, 0)}
     rows = [r for r in csv.DictReader(open(results)) if r["D"].strip()]
-    for dx, c in colours.items():
-        pts = sorted((1 / float(r["R_mm"]) if float(r["R_mm"]) > 0 else 0.0, float(r["D"]))
-                     for r in rows if float(r["dx_mm"]) == dx)
-        for (a, d), (b, e) in zip(pts, pts[1:]):
-            line(X(a), Y(d), X(b), Y(e), c)
-        for a, d in pts:
-            marker(X(a), Y(d), c, "o")
+    # 3-D sticks (and R = 0, the 1-D stick) at 1/R: solid lines, discs. Slabs of
+    # half-thickness h at 1/(2h) (the cylinder radius with the same front
+    # curvature on the axis, docs/validation/rate-stick-size-effect.md):
+    # dotted lines, squares; the 1-D point (R = 0) starts both series.
+    for slab in (False, True):
+        for dx, c in colours.items():
+            pts = sorted((0.0 if float(r["R_mm"]) == 0 else 1 / ((2 if slab else 1) * float(r["R_mm"])), float(r["D"]))
+                         for r in rows if float(r["dx_mm"]) == dx
+                         and (float(r["R_mm"]) == 0 or (r.get("geometry", "").strip() == "slab") == slab))
+            if slab and all(a == 0 for a, _ in pts):
+                continue
+            for (a, d), (b, e) in zip(pts, pts[1:]):
+                line(X(a), Y(d), X(b), Y(e), c, dotted=slab)
+            for a, d in pts:
+                marker(X(a), Y(d), c, "s" if slab and a > 0 else "o")
     write_png(png, W, H, px)
 
 
