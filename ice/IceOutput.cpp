@@ -244,14 +244,16 @@ void IceComponent::model_reductions(const std::set<std::string>& labels,
                                     std::map<std::string, std::vector<double>>& out) const {
   for (const IceModelP& m : setup_.models) {
     std::map<const PatchSums*, std::vector<double>> totals;
+    std::set<std::string> rest = labels;
     for (const ModelSum& s : m->patch_sums()) {
+      rest.erase(s.label);
       if (!labels.count(s.label)) continue;
       auto it = totals.find(s.sums);
       if (it == totals.end()) it = totals.emplace(s.sums, layout_.ordered_sum(s.sums->partials(), s.sums->width())).first;
       out[s.label].assign(it->second.begin() + s.first, it->second.begin() + s.first + s.width);
     }
     std::map<std::string, std::vector<double>> plain;
-    m->reductions(labels, plain);
+    m->reductions(rest, plain);
     for (auto& [label, v] : plain) {
       if (layout_.distributed) {
         std::vector<PatchPartial> mine;

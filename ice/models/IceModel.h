@@ -97,7 +97,18 @@ class IceModel {
   // plain `reductions` are per process; on several ranks the component adds
   // the processes' values (correct to round-off, not bit for bit).
   virtual std::vector<ModelSum> patch_sums() const { return {}; }
-  virtual void reductions(const std::set<std::string>&, std::map<std::string, std::vector<double>>&) const {}
+  // By default the patch sums of this process added in patch order (the
+  // whole answer in one process; the component asks for the labels of
+  // patch_sums() through them, not through this).
+  virtual void reductions(const std::set<std::string>& labels, std::map<std::string, std::vector<double>>& out) const {
+    for (const ModelSum& s : patch_sums()) {
+      if (!labels.count(s.label)) continue;
+      std::vector<double> v(std::size_t(s.width), 0.0);
+      for (const PatchPartial& row : s.sums->partials())
+        for (int c = 0; c < s.width; ++c) v[std::size_t(c)] += row.values[std::size_t(s.first + c)];
+      out[s.label] = v;
+    }
+  }
   // Restart: fields whose value carries over between steps, and sums.
   virtual std::vector<std::pair<std::string, CellScalars*>> state_fields() { return {}; }
   virtual std::vector<std::pair<std::string, double*>> state_scalars() { return {}; }
