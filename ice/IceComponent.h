@@ -146,6 +146,8 @@ class IceComponent final : public Component {
   void check_state(int step, const char* phase) const;  // all ranks throw if one finds a bad cell
   void check_state_here(int step, const char* phase) const;
   void lay_out_patches();  // IceRanks.cpp: layout_, the own-patch grid, the halo exchange
+  // IceOutput.cpp: the source models' sums over the patches of all ranks.
+  void model_reductions(const std::set<std::string>& labels, std::map<std::string, std::vector<double>>& out) const;
 
   IceSetup setup_;
   PatchLayout layout_;

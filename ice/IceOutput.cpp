@@ -233,8 +233,39 @@ std::map<std::string, std::vector<double>> IceComponent::reductions(const std::s
   if (labels.count("KineticEnergy")) out["KineticEnergy"] = {ke};
   if (labels.count("TotalIntEng")) out["TotalIntEng"] = {ie};
   if (labels.count("TotalMomentum")) out["TotalMomentum"] = {mom[0], mom[1], mom[2]};
-  for (const IceModelP& m : setup_.models) m->reductions(labels, out);
+  model_reductions(labels, out);
   return out;
+}
+
+// The source models' sums (issue 7): per-patch sums (ModelSum) added over the
+// patches of all ranks in ascending patch id -- the same bits on any rank
+// count; plain per-process sums (models without per-patch sums) added over
+// the ranks (one partial per rank, keyed by its first patch: right to
+// round-off only). Every rank makes the same calls (labels and models are
+// the same everywhere), so the collectives match.
+void IceComponent::model_reductions(const std::set<std::string>& labels,
+                                    std::map<std::string, std::vector<double>>& out) const {
+  for (const IceModelP& m : setup_.models) {
+    std::map<const PatchSums*, std::vector<double>> totals;
+    std::set<std::string> rest = labels;
+    for (const ModelSum& s : m->patch_sums()) {
+      rest.erase(s.label);
+      if (!labels.count(s.label)) continue;
+      auto it = totals.find(s.sums);
+      if (it == totals.end()) it = totals.emplace(s.sums, layout_.ordered_sum(s.sums->partials(), s.sums->width())).first;
+      out[s.label].assign(it->second.begin() + s.first, it->second.begin() + s.first + s.width);
+    }
+    std::map<std::string, std::vector<double>> plain;
+    m->reductions(rest, plain);
+    for (auto& [label, v] : plain) {
+      if (layout_.distributed) {
+        std::vector<PatchPartial> mine;
+        if (!layout_.own.empty()) mine.push_back({layout_.own.front(), v});
+        v = layout_.ordered_sum(mine, int(v.size()));
+      }
+      out[label] = v;
+    }
+  }
 }
 
 // The state the next step reads: rho, u, T, v (with extra cells and ghosts)
@@ -262,6 +293,8 @@ void IceComponent::save_state(StateArchive& a) const {
     const std::string pre = "ice.model" + std::to_string(k) + ".";
     for (auto& [name, field] : setup_.models[k]->state_fields()) a.put(pre + name, flatten(layout_, *field));
     for (auto& [name, value] : setup_.models[k]->state_scalars()) a.put_scalar(pre + name, *value);
+    for (auto& [name, sums] : setup_.models[k]->state_sums())
+      a.put(pre + "sums." + name, layout_.ordered_sum(sums->partials(), sums->width()));
   }
 }
 
@@ -289,6 +322,7 @@ void IceComponent::load_state(const StateArchive& a) {
     const std::string pre = "ice.model" + std::to_string(k) + ".";
     for (auto& [name, field] : setup_.models[k]->state_fields()) restore(layout_, a, pre + name, *field);
     for (auto& [name, value] : setup_.models[k]->state_scalars()) *value = a.scalar(pre + name);
+    for (auto& [name, sums] : setup_.models[k]->state_sums()) sums->restore_totals(a.doubles(pre + "sums." + name));
   }
 }
 

@@ -9,7 +9,10 @@
 // every field is PatchFields over them. MpiHaloExchange fills the ghosts
 // from the other ranks with the same bits LocalHaloExchange copies in one
 // process. The reductions (stable dt, .dat sums, implicit residual, restart
-// decisions) go through layout_ (core/parallel/PatchLayout).
+// decisions) go through layout_ (core/parallel/PatchLayout). Source models
+// (<Models>) compute their per-cell sources on the own patches and keep their
+// sums per patch (ice/models/PatchSums.h), added in patch order over the
+// ranks (IceComponent::model_reductions).
 #include <memory>
 
 #include "core/base/Errors.h"
@@ -25,8 +28,6 @@ void IceComponent::lay_out_patches() {
     if (layout_.distributed) {
       for (const IceMaterialSpec& m : setup_.materials)
         if (m.lagrangian) throw MissingFeature({}, "MPMICE on more than one MPI rank (issue 7)");
-      if (!setup_.models.empty())
-        throw MissingFeature({}, "ICE source models (<Models>) on more than one MPI rank (issue 7)");
       setup_.grid = layout_.own_grid();
     }
   }

@@ -78,10 +78,13 @@ std::vector<std::vector<int>> all_to_all_ints(const std::vector<std::vector<int>
   return got;
 }
 
+MpiHaloExchange::Traffic g_traffic;  // MpiHaloExchange::traffic()
+
 // Sends send_buf[r] to each rank r and receives recv_buf[r] (already sized)
 // from it; messages to this rank are copies.
 void exchange_buffers(int rank, std::vector<std::vector<double>>& send_buf, std::vector<std::vector<double>>& recv_buf) {
   const int size = static_cast<int>(send_buf.size());
+  ++g_traffic.calls;
   std::vector<MPI_Request> req;
   req.reserve(2 * size);
   for (int r = 0; r < size; ++r) {
@@ -92,6 +95,8 @@ void exchange_buffers(int rank, std::vector<std::vector<double>>& send_buf, std:
   }
   for (int r = 0; r < size; ++r) {
     if (r == rank || send_buf[r].empty()) continue;
+    ++g_traffic.messages;
+    g_traffic.doubles += static_cast<long long>(send_buf[r].size());
     req.emplace_back();
     MPI_Isend(send_buf[r].data(), static_cast<int>(send_buf[r].size()), MPI_DOUBLE, r, kTag, MPI_COMM_WORLD,
               &req.back());
@@ -101,6 +106,8 @@ void exchange_buffers(int rank, std::vector<std::vector<double>>& send_buf, std:
 }
 
 }  // namespace
+
+MpiHaloExchange::Traffic MpiHaloExchange::traffic() { return g_traffic; }
 
 MpiHaloExchange::MpiHaloExchange(const Grid& grid, std::vector<int> owner) : grid_(&grid), owner_(std::move(owner)) {
   if (owner_.size() != grid.patches.size())

@@ -42,6 +42,14 @@ class MpiHaloExchange final : public HaloExchange {
 
   struct Plan;  // MpiHaloExchange.cpp
 
+  // What this process has sent to other ranks so far (every exchange and
+  // accumulate call of every instance): the figures of the scaling model,
+  // docs/scaling.md (bytes = 8 doubles).
+  struct Traffic {
+    long long calls = 0, messages = 0, doubles = 0;
+  };
+  static Traffic traffic();
+
  private:
   template <class FieldT>
   void exchange_impl(PatchFields<FieldT>& f, bool nodes);

@@ -37,14 +37,12 @@ class AddHeat final : public IceModel, public SourceMaterials {
   }
   std::string type() const override { return "ADD_HEAT"; }
   std::vector<std::size_t> source_materials() const override { return mats_; }
-  void initialize(const Grid&, const std::vector<IceMaterialFields>&) override {}
+  void initialize(const Grid& g, const std::vector<IceMaterialFields>&) override { added_.reset(g, 1); }
   std::set<std::string> labels() const override { return {"TotalHeatAdded"}; }
-  void reductions(const std::set<std::string>& l, std::map<std::string, std::vector<double>>& out) const override {
-    if (l.count("TotalHeatAdded")) out["TotalHeatAdded"] = {added_};
-  }
-  std::vector<std::pair<std::string, double*>> state_scalars() override { return {{"TotalHeatAdded", &added_}}; }
+  std::vector<ModelSum> patch_sums() const override { return {{"TotalHeatAdded", &added_, 0, 1}}; }
+  std::vector<std::pair<std::string, PatchSums*>> state_sums() override { return {{"TotalHeatAdded", &added_}}; }
   void compute_sources(const IceModelInput& in, IceModelSources& out) override {
-    added_ = 0;
+    added_.zero();
     if (in.time < t0_ || in.time > t1_) return;
     const Grid& g = in.grid;
     const double V = g.cell_volume();
@@ -55,7 +53,7 @@ class AddHeat final : public IceModel, public SourceMaterials {
           if (!(in.mats[m].vol_frac_CC[pi](a, b, c) > 0.001)) return;
           const double dE = coeff_[i] * in.dt * in.mats[m].rho_CC[pi](a, b, c) * V;
           out.energy[m][pi](a, b, c) += dE;
-          added_ += dE;
+          added_.at(pi, 0) += dE;
         });
     }
   }
@@ -63,7 +61,8 @@ class AddHeat final : public IceModel, public SourceMaterials {
  private:
   std::vector<std::size_t> mats_;
   std::vector<double> coeff_;
-  double t0_ = 0, t1_ = 0, added_ = 0;
+  double t0_ = 0, t1_ = 0;
+  PatchSums added_;  // per patch (exact across MPI ranks)
 };
 
 // PassiveScalar: a scalar q (label "scalar-<name>") carried with the mass of
@@ -188,15 +187,15 @@ class PassiveScalar final : public IceModel, public SourceMaterials {
   std::vector<TransportedScalar> transported() override { return {{m_, &q_, &src_}}; }
   std::set<std::string> labels() const override { return {name_, "totalSum_" + name_}; }
   std::vector<ModelField> fields() const override { return {{name_, int(m_), &q_}}; }
-  void reductions(const std::set<std::string>& l, std::map<std::string, std::vector<double>>& out) const override {
-    if (!l.count("totalSum_" + name_)) return;
+  // totalSum = sum rho V q over the interior cells, one partial per patch.
+  std::vector<ModelSum> patch_sums() const override {
     const Grid& g = *grid_;
-    double sum = 0;
+    total_.reset(g, 1);
     for (std::size_t pi = 0; pi < g.patches.size(); ++pi)
       for_each_cell_serial(g.patches[pi].cells(), [&](int i, int j, int k) {
-        sum += (*mats_)[m_].rho_CC[pi](i, j, k) * g.cell_volume() * q_[pi](i, j, k);
+        total_.at(pi, 0) += (*mats_)[m_].rho_CC[pi](i, j, k) * g.cell_volume() * q_[pi](i, j, k);
       });
-    out["totalSum_" + name_] = {sum};
+    return {{"totalSum_" + name_, &total_, 0, 1}};
   }
   std::vector<std::pair<std::string, CellScalars*>> state_fields() override { return {{name_, &q_}}; }
 
@@ -213,6 +212,7 @@ class PassiveScalar final : public IceModel, public SourceMaterials {
   const std::vector<IceMaterialFields>* mats_ = nullptr;
   std::vector<Region> regions_;
   CellScalars q_, src_;
+  mutable PatchSums total_;  // filled when the sums are asked for
 };
 
 }  // namespace

@@ -18,10 +18,12 @@ namespace {
 // heat of reaction, the reacted fraction F and its change delF of the last
 // step (labels "F" and "delF" on the reactant, as Uintah), and the mass and
 // heat of the last step (Uintah's per-step sums totalMassBurned and
-// totalHeatReleased).
+// totalHeatReleased), kept per patch (PatchSums) so that they are the same
+// bits on any number of MPI ranks.
 class Conversion : public IceModel, public SourceMaterials {
  public:
   void initialize(const Grid& g, const std::vector<IceMaterialFields>&) override {
+    sums_.reset(g, 2);
     F_ = CellScalars(g, 0);
     delF_ = CellScalars(g, 0);
     F_.fill(0.0);
@@ -31,14 +33,12 @@ class Conversion : public IceModel, public SourceMaterials {
   std::vector<ModelField> fields() const override {
     return {{"F", int(m0_), &F_}, {"delF", int(m0_), &delF_}};
   }
-  void reductions(const std::set<std::string>& l, std::map<std::string, std::vector<double>>& out) const override {
-    if (l.count("totalMassBurned")) out["totalMassBurned"] = {burned_};
-    if (l.count("totalHeatReleased")) out["totalHeatReleased"] = {heat_};
+  // Per patch: column 0 the mass converted in the last step, column 1 its heat.
+  std::vector<ModelSum> patch_sums() const override {
+    return {{"totalMassBurned", &sums_, 0, 1}, {"totalHeatReleased", &sums_, 1, 1}};
   }
   std::vector<std::pair<std::string, CellScalars*>> state_fields() override { return {{"F", &F_}, {"delF", &delF_}}; }
-  std::vector<std::pair<std::string, double*>> state_scalars() override {
-    return {{"totalMassBurned", &burned_}, {"totalHeatReleased", &heat_}};
-  }
+  std::vector<std::pair<std::string, PatchSums*>> state_sums() override { return {{"burned_heat", &sums_}}; }
   std::vector<std::size_t> source_materials() const override { return {m0_, m1_}; }
   std::size_t reactant() const { return m0_; }
   std::size_t product() const { return m1_; }
@@ -50,8 +50,10 @@ class Conversion : public IceModel, public SourceMaterials {
   void convert_cells(const IceModelInput& in, IceModelSources& out, Rate rate) {
     const Grid& g = in.grid;
     const double V = g.cell_volume();
-    burned_ = heat_ = 0;
+    sums_.zero();
     for (std::size_t pi = 0; pi < g.patches.size(); ++pi) {
+      double& burned = sums_.at(pi, 0);
+      double& heat = sums_.at(pi, 1);
       const IceMaterialFields& r = in.mats[m0_];
       const IceMaterialFields& p = in.mats[m1_];
       for_each_cell_serial(g.patches[pi].cells(), [&](int i, int j, int k) {
@@ -61,8 +63,8 @@ class Conversion : public IceModel, public SourceMaterials {
         if (!(dm > 0)) return;
         convert_mass(out, pi, c, m0_, m1_, dm, r.vel_CC[pi](c), in.cv_CC[m0_][pi](c) * r.temp_CC[pi](c),
                      r.sp_vol_CC[pi](c), E0_);
-        burned_ += dm;
-        heat_ += dm * E0_;
+        burned += dm;
+        heat += dm * E0_;
       });
     }
   }
@@ -70,7 +72,7 @@ class Conversion : public IceModel, public SourceMaterials {
   std::size_t m0_ = 0, m1_ = 0;
   double E0_ = 0;
   CellScalars F_, delF_;
-  double burned_ = 0, heat_ = 0;
+  PatchSums sums_;
 };
 
 void read_pair(ModelParams& p, const IceSetup& s, std::size_t& m0, std::size_t& m1) {

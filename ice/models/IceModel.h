@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "ice/IceFields.h"
+#include "ice/models/PatchSums.h"
 
 namespace tephra {
 
@@ -77,6 +78,17 @@ struct CellIdealGas {
   const CellScalars* gamma = nullptr;
 };
 
+// A reduction a model keeps per patch (PatchSums): the label's values are
+// columns [first, first + width) of `sums`, added over the patches of all
+// ranks in ascending patch id by the component (the same bits on any rank
+// count, issue 7).
+struct ModelSum {
+  std::string label;
+  const PatchSums* sums = nullptr;
+  int first = 0;
+  int width = 1;
+};
+
 class IceModel {
  public:
   virtual ~IceModel() = default;
@@ -98,10 +110,28 @@ class IceModel {
   // Output: labels it can save, the cell fields and the reduction sums.
   virtual std::set<std::string> labels() const { return {}; }
   virtual std::vector<ModelField> fields() const { return {}; }
-  virtual void reductions(const std::set<std::string>&, std::map<std::string, std::vector<double>>&) const {}
+  // Sums kept per patch (preferred: exact across ranks, see ModelSum). The
+  // plain `reductions` are per process; on several ranks the component adds
+  // the processes' values (correct to round-off, not bit for bit).
+  virtual std::vector<ModelSum> patch_sums() const { return {}; }
+  // By default the patch sums of this process added in patch order (the
+  // whole answer in one process; the component asks for the labels of
+  // patch_sums() through them, not through this).
+  virtual void reductions(const std::set<std::string>& labels, std::map<std::string, std::vector<double>>& out) const {
+    for (const ModelSum& s : patch_sums()) {
+      if (!labels.count(s.label)) continue;
+      std::vector<double> v(std::size_t(s.width), 0.0);
+      for (const PatchPartial& row : s.sums->partials())
+        for (int c = 0; c < s.width; ++c) v[std::size_t(c)] += row.values[std::size_t(s.first + c)];
+      out[s.label] = v;
+    }
+  }
   // Restart: fields whose value carries over between steps, and sums.
   virtual std::vector<std::pair<std::string, CellScalars*>> state_fields() { return {}; }
   virtual std::vector<std::pair<std::string, double*>> state_scalars() { return {}; }
+  // Per-patch sums that carry over (the totals are saved; a restart puts them
+  // in level patch 0's row, PatchSums::restore_totals).
+  virtual std::vector<std::pair<std::string, PatchSums*>> state_sums() { return {}; }
 };
 
 using IceModelP = std::shared_ptr<IceModel>;

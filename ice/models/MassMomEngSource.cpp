@@ -40,20 +40,15 @@ class MassMomEngSource final : public IceModel, public SourceMaterials {
   }
   std::string type() const override { return "mass_momentum_energy_src"; }
   std::vector<std::size_t> source_materials() const override { return {m_}; }
-  void initialize(const Grid&, const std::vector<IceMaterialFields>&) override {}
+  void initialize(const Grid& g, const std::vector<IceMaterialFields>&) override { sums_.reset(g, 5); }
   std::set<std::string> labels() const override { return {"TotalMass_src", "TotalMom_src", "TotalEng_src"}; }
-  void reductions(const std::set<std::string>& l, std::map<std::string, std::vector<double>>& out) const override {
-    if (l.count("TotalMass_src")) out["TotalMass_src"] = {mass_};
-    if (l.count("TotalMom_src")) out["TotalMom_src"] = {mom_[0], mom_[1], mom_[2]};
-    if (l.count("TotalEng_src")) out["TotalEng_src"] = {eng_};
+  // Per patch: columns 0 mass, 1 energy, 2-4 momentum (exact across MPI ranks).
+  std::vector<ModelSum> patch_sums() const override {
+    return {{"TotalMass_src", &sums_, 0, 1}, {"TotalEng_src", &sums_, 1, 1}, {"TotalMom_src", &sums_, 2, 3}};
   }
-  std::vector<std::pair<std::string, double*>> state_scalars() override {
-    return {{"TotalMass_src", &mass_}, {"TotalEng_src", &eng_}, {"TotalMom_src_x", &mom_[0]},
-            {"TotalMom_src_y", &mom_[1]}, {"TotalMom_src_z", &mom_[2]}};
-  }
+  std::vector<std::pair<std::string, PatchSums*>> state_sums() override { return {{"sums", &sums_}}; }
   void compute_sources(const IceModelInput& in, IceModelSources& out) override {
-    mass_ = eng_ = 0;
-    mom_ = Vec3::Zero();
+    sums_.zero();
     if (in.time < t0_ || in.time > t1_) return;
     const Grid& g = in.grid;
     const double Vdt = g.cell_volume() * in.dt;
@@ -67,9 +62,9 @@ class MassMomEngSource final : public IceModel, public SourceMaterials {
         out.mass[m_][pi](i, j, k) += dm;
         out.momentum[m_][pi](i, j, k) += dp;
         out.energy[m_][pi](i, j, k) += dE;
-        mass_ += dm;
-        mom_ += dp;
-        eng_ += dE;
+        sums_.at(pi, 0) += dm;
+        sums_.at(pi, 1) += dE;
+        for (int d = 0; d < 3; ++d) sums_.at(pi, 2 + d) += dp[d];
       });
   }
 
@@ -77,8 +72,7 @@ class MassMomEngSource final : public IceModel, public SourceMaterials {
   std::size_t m_ = 0;
   double mass_rate_ = 0, eng_rate_ = 0, t0_ = 0, t1_ = 0;
   Vec3 mom_rate_ = Vec3::Zero();
-  double mass_ = 0, eng_ = 0;
-  Vec3 mom_ = Vec3::Zero();
+  PatchSums sums_;
 };
 
 }  // namespace

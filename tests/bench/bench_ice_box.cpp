@@ -20,6 +20,7 @@
 
 #include "core/base/PhaseTimers.h"
 #include "core/deck/DeckLoader.h"
+#include "core/grid/MpiHaloExchange.h"
 #include "core/grid/Loop.h"
 #include "ice/IceComponent.h"
 
@@ -94,6 +95,7 @@ int main(int argc, char** argv) {
       ice->advance(t, dt, 1);  // warm-up (first touch of the scratch fields)
       t += dt;
       phase_timers() = PhaseTimers{};  // the table shows the timed steps only
+      const MpiHaloExchange::Traffic sent0 = MpiHaloExchange::traffic();
       const auto start = std::chrono::steady_clock::now();
       const std::clock_t cpu0 = std::clock();
       for (int k = 2; k <= steps + 1; ++k) {
@@ -106,6 +108,13 @@ int main(int argc, char** argv) {
       const double rate = double(n) * n * n * steps / wall, cpu_rate = double(n) * n * n * steps / cpu;
       std::printf("%10d %8d %12.3f %18.3e %22.3e %20.3e\n", materials, threads, wall, rate, rate / threads, cpu_rate);
       std::printf("csv,%d,%d,%d,%.4f,%.4e,%.4e\n", n, materials, threads, wall, rate, cpu_rate);
+      // Halo traffic of this rank per timed step (0 in one process):
+      // docs/scaling.md counts it per patch face.
+      const MpiHaloExchange::Traffic sent1 = MpiHaloExchange::traffic();
+      if (sent1.messages > sent0.messages)
+        std::printf("halo per step: %.1f exchange calls, %.1f messages, %.0f bytes sent by this rank\n",
+                    double(sent1.calls - sent0.calls) / steps, double(sent1.messages - sent0.messages) / steps,
+                    8.0 * double(sent1.doubles - sent0.doubles) / steps);
       if (phases) std::printf("%s\n", phase_timers().table(wall).c_str());
     }
   }
