@@ -91,6 +91,7 @@ void MpmComponent::initialize() {
   time_ = 0.0;
   acc_strain_energy_ = 0.0;
   plastic_work_ = 0.0;
+  ledger_ = EnergyLedger{};
 }
 
 // Vaango's explicit rule (UCNH::computeStressTensor, called by SerialMPM's
@@ -391,6 +392,15 @@ void MpmComponent::advance(double t, double dt, int step) {
   if (velocity_surfaces) find_surface_velocity_nodes(t);  // v_g = v(t_n) at the nodes they reach
   // MPMICE steps 1-6: node -> cell, equilibration, face velocities, pressure (mpmice/).
   if (coupling_) coupling_->after_interpolate_to_grid(t, dt, step);
+  // The kinetic-energy ledger (mpm/EnergyLedger.h): KE_g at each velocity correction of the step.
+  const bool ledger = setup_.energy_ledger;
+  if (ledger && layout_.distributed)
+    throw MissingFeature({}, "the kinetic-energy ledger labels (" + std::string(energy_ledger_labels()[0]) +
+                                 ", ...) on more than one MPI rank");
+  if (ledger) {
+    ledger_velocity_.resize(mats.size());
+    for (std::size_t i = 0; i < mats.size(); ++i) ledger_velocity_[i][0] = mats[i].grid.velocity;  // v_g
+  }
   // 4. Contact on the interpolated velocities v_g.
   if (contact) exchange_momentum(ContactStage::Interpolated, t, dt);
   // 5. f_int,g = -sum V_p sigma_p grad S_gp with sigma, V at t_n (Alg. 6, eq. 1.70).
@@ -412,8 +422,12 @@ void MpmComponent::advance(double t, double dt, int step) {
   // MPMICE steps 8-13: Lagrangian cell values, exchange, fluid advection; the
   // solid's cell velocity change back to the nodes (mpmice/).
   if (coupling_) coupling_->after_integrate_grid(dt, step);
+  if (ledger)
+    for (std::size_t i = 0; i < mats.size(); ++i) ledger_velocity_[i][1] = mats[i].grid.velocity_star;  // v*_g
   // 7. Contact on the integrated velocities v*_g.
   if (contact) exchange_momentum(ContactStage::Integrated, t, dt);
+  if (ledger)  // v*_g after the integrated contact
+    for (std::size_t i = 0; i < mats.size(); ++i) ledger_velocity_[i][2] = mats[i].grid.velocity_star;
   // 8. Grid BCs on v*_g, then a_g = (v*_g - v_g)/dt (Alg. 8). With contact,
   //    v_g is the P2G velocity from before the interpolated contact, so that
   //    the FLIP update v_p += dt sum a_g S carries both contact corrections
@@ -436,6 +450,10 @@ void MpmComponent::advance(double t, double dt, int step) {
       }
     }
   }
+  if (ledger)  // v_g, v^c_g = g.velocity, v*_g, after contact, v^f_g = g.velocity_star (mpm/EnergyLedger.h)
+    for (std::size_t i = 0; i < mats.size(); ++i)
+      add_node_terms(mats[i].grid, ledger_velocity_[i][0], mats[i].grid.velocity, ledger_velocity_[i][1],
+                     ledger_velocity_[i][2], mats[i].grid.velocity_star, dt, ledger_);
   //    <use_prescribed_deformation>: v*_g = l x_g, so that F follows F*(t) (mpm/PrescribedDeformation.h).
   if (setup_.prescribed) {
     const Mat3 l = setup_.prescribed->step_velocity_gradient(t, dt);
@@ -517,7 +535,9 @@ void MpmComponent::advance(double t, double dt, int step) {
       Particles& p = m.particles;
       // v_n, needed only to clamp rogue speeds (<maximum_particle_velocity> given).
       const std::vector<Vec3> v_old = setup_.flags.maximum_particle_velocity < 3e105 ? p.v : std::vector<Vec3>{};
+      const std::vector<Vec3> v_ledger = ledger ? p.v : std::vector<Vec3>{};  // v_n (mpm/EnergyLedger.h)
       grid_to_particles(m.stencils, m.grid, dt, p);
+      if (ledger) ledger_.transfer_loss -= particle_increment_energy(p, v_ledger);
       wrap_periodic_positions(setup_.grid, p);  // re-enter through the opposite periodic face
       update_temperatures(m, dt);  // T += dt (sum rate_g S + model heating)
       if (setup_.flags.test_for_negative_temperatures) check_temperatures(m, step);  // T < 0: exit 4

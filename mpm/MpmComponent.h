@@ -17,6 +17,7 @@
 #include "mpm/GridBoundaryConditions.h"
 #include "mpm/MpmCoupling.h"
 #include "mpm/MpmFlags.h"
+#include "mpm/EnergyLedger.h"
 #include "mpm/NodeGrid.h"
 #include "mpm/PrescribedDeformation.h"
 #include "mpm/ParticleSeeding.h"
@@ -71,6 +72,7 @@ struct MpmSetup {
   std::optional<PrescribedDeformation> prescribed;  // <use_prescribed_deformation>, or none
   bool accumulate_strain_energy = false;  // the deck saves AccStrainEnergy (mpm/StrainWork.h)
   bool accumulate_plastic_work = false;   // the deck saves PlasticWork (mpm/StrainWork.h)
+  bool energy_ledger = false;  // the deck saves a label of the kinetic-energy ledger (mpm/EnergyLedger.h)
   bool node_stress = true;  // P2G sums g.stressFS (NodeGrid::node_stress); false unless the deck saves it
                             // (always summed with a contact model: the friction contacts read it)
   bool thermal_contact = false;
@@ -189,6 +191,10 @@ class MpmComponent final : public Component {
   double acc_strain_energy_ = 0.0;
   // PlasticWork: the models' plastic work summed over the steps (mpm/StrainWork.h).
   double plastic_work_ = 0.0;
+  // The kinetic-energy ledger summed over the steps (mpm/EnergyLedger.h; setup_.energy_ledger).
+  EnergyLedger ledger_;
+  // Per material, the node velocities the ledger compares: v_g (P2G), v*_g, v*_g after the integrated contact.
+  std::vector<std::array<std::vector<Vec3>, 3>> ledger_velocity_;
   // Node aliases of the periodic directions (inactive without <periodic>).
   PeriodicNodes periodic_;
   MpmCoupling* coupling_ = nullptr;  // not owned

@@ -137,6 +137,7 @@ std::set<std::string> MpmComponent::known_labels() const {
   for (const char* l : kParticleLabels) s.insert(l);
   for (const char* l : kNodeLabels) s.insert(l);
   for (const char* l : kReductionLabels) s.insert(l);
+  for (const char* l : energy_ledger_labels()) s.insert(l);
   for (const MpmMaterial& m : setup_.materials)
     for (const HistoryVariable& h : m.model->history()) s.insert("p." + h.name);
   // Only the faces of <boundary_traction_faces> are computed (as in Vaango,
@@ -267,6 +268,11 @@ std::map<std::string, std::vector<double>> MpmComponent::reductions(const std::s
       throw std::logic_error("MPM reductions: PlasticWork is summed only when the deck saves it");
     out["PlasticWork"] = {plastic_work_};
   }
+  // The kinetic-energy ledger summed over the steps (Tephra labels; mpm/EnergyLedger.h).
+  if (labels.count("ContactKineticEnergyRemoved")) out["ContactKineticEnergyRemoved"] = {ledger_.contact_removed};
+  if (labels.count("BoundaryKineticEnergyRemoved")) out["BoundaryKineticEnergyRemoved"] = {ledger_.boundary_removed};
+  if (labels.count("GridForceWork")) out["GridForceWork"] = {ledger_.grid_force_work};
+  if (labels.count("TransferKineticEnergyLoss")) out["TransferKineticEnergyLoss"] = {ledger_.transfer_loss};
   if (labels.count("TotalMass")) out["TotalMass"] = {mass};
   if (labels.count("TotalMomentum")) out["TotalMomentum"] = {mom[0], mom[1], mom[2]};
   // sqrt(sum V0 |u_p - u_exact(X_p, t)|^2 / sum V0) with <run_MMS_problem>
@@ -347,6 +353,8 @@ void MpmComponent::save_state(StateArchive& a) const {
   a.put_scalar("mpm.time", time_);
   a.put_scalar("mpm.acc_strain_energy", acc_strain_energy_);
   a.put_scalar("mpm.plastic_work", plastic_work_);
+  a.put("mpm.energy_ledger", std::vector<double>{ledger_.contact_removed, ledger_.boundary_removed,
+                                                 ledger_.grid_force_work, ledger_.transfer_loss});
   std::vector<double> bndy;
   for (int f = 0; f < 6; ++f) {
     append(bndy, boundary_force_[f]);
@@ -379,6 +387,12 @@ void MpmComponent::load_state(const StateArchive& a) {
   time_ = a.scalar("mpm.time");
   acc_strain_energy_ = a.has("mpm.acc_strain_energy") ? a.scalar("mpm.acc_strain_energy") : 0.0;
   plastic_work_ = a.has("mpm.plastic_work") ? a.scalar("mpm.plastic_work") : 0.0;
+  ledger_ = EnergyLedger{};
+  if (a.has("mpm.energy_ledger")) {
+    const std::vector<double>& e = a.doubles("mpm.energy_ledger");
+    if (e.size() != 4) throw RuntimeFailure("checkpoint array 'mpm.energy_ledger' has a bad size");
+    ledger_ = EnergyLedger{e[0], e[1], e[2], e[3]};
+  }
   const std::vector<double>& bndy = a.doubles("mpm.boundary_force_area");
   if (bndy.size() != 24) throw RuntimeFailure("checkpoint array 'mpm.boundary_force_area' has a bad size");
   for (int f = 0; f < 6; ++f) {

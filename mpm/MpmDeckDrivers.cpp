@@ -39,13 +39,16 @@ void read_loads_and_drivers(const Deck& deck, MpmSetup& setup) {
                            setup.flags.deformation_gradient + "' (implemented: first_order)");
     setup.prescribed = read_prescribed_deformation(mpm_flags.require_child("prescribed_deformation_file"));
   }
-  // AccStrainEnergy and PlasticWork are summed every step (under MPI: over the
-  // ranks, per material), g.stressFS in P2G, only when the deck saves them.
+  // AccStrainEnergy, PlasticWork and the energy ledger (mpm/EnergyLedger.h) are
+  // summed every step (PlasticWork under MPI: over the ranks, per material),
+  // g.stressFS in P2G, only when the deck saves them.
   setup.node_stress = false;
   if (const DeckNode* archiver = root.child("DataArchiver"))
     for (const DeckNode* save : archiver->children_named("save")) {
       if (save->attribute("label") == std::optional<std::string>("AccStrainEnergy")) setup.accumulate_strain_energy = true;
       if (save->attribute("label") == std::optional<std::string>("PlasticWork")) setup.accumulate_plastic_work = true;
+      for (const char* l : energy_ledger_labels())
+        if (save->attribute("label") == std::optional<std::string>(l)) setup.energy_ledger = true;
       if (save->attribute("label") == std::optional<std::string>("g.stressFS")) setup.node_stress = true;
     }
   // Axisymmetric (mpm/Axisymmetric.h): x = r >= 0, one hoop cell in z, linear interpolation.

@@ -4,7 +4,7 @@ MPM/Impact/cylinderImpact_A_JC.ups (decks README A5; docs/models/taylor-impact.m
 
 Usage:
   tests/bench/taylor_impact_study.py BUILD_DIR [--work DIR] [--h MM[,MM...]]
-                                     [--end T] [--no-run] [--threads N]
+                                     [--end T] [--no-run] [--threads N] [--wall rigid|symmetry]
 
 For each grid spacing h (mm; default 0.75,0.5,0.3333) it writes a variant of the
 deck to WORK/h<h>/deck.ups, runs `BUILD_DIR/bin/tephra` on it (one thread unless
@@ -32,6 +32,12 @@ Reduced figures, each from the last output frame:
   * energy: KE0 = sum 1/2 m v0^2 of the rod (227 m/s), and at the end
     KE + SE + W_p (KineticEnergy, StrainEnergy, PlasticWork .dat files) and the
     deficit (KE0 - KE - SE - W_p)/KE0; also AccStrainEnergy (total stress work).
+  * the kinetic-energy ledger (mpm/EnergyLedger.h, saved by every variant): wall
+    capture C, grid-BC removal B, FLIP transfer loss T, grid-force work G, and the
+    work mismatch M = -G - SE - W_p, so that the deficit = C + B + T + M exactly.
+--wall symmetry: the wall material and its rigid contact removed and the grid's
+y- symmetry face put at y = 0 (a frictionless rigid wall as a mirror plane;
+rod = material 0); the default (rigid) is the deck's own wall.
 Richardson (three spacings h1 > h2 > h3 with a common ratio r = h1/h2 = h2/h3):
   p = ln((f1 - f2)/(f2 - f3))/ln r,  f_inf = f3 + (f3 - f2)/(r^p - 1).
 """
@@ -52,20 +58,37 @@ X_MAX, Y_MIN, Y_MAX = 9.0e-3, -3.0e-3, 36.0e-3  # variant box, each end rounded 
 V0 = 227.0                                        # the deck's impact speed [m/s]
 L0, R0 = 32.4e-3, 3.2e-3                          # the deck's rod [m]
 RHO = 8930.0                                      # MaterialConstAnnCopper.xml [kg/m^3]
+# The kinetic-energy ledger (mpm/EnergyLedger.h): summed over the steps, KE - KE0 =
+# GridForceWork - ContactKineticEnergyRemoved - BoundaryKineticEnergyRemoved - TransferKineticEnergyLoss.
+LEDGER = ("ContactKineticEnergyRemoved", "BoundaryKineticEnergyRemoved", "GridForceWork", "TransferKineticEnergyLoss")
 KE_NOMINAL = 0.5 * RHO * math.pi * R0 ** 2 / 4.0 * L0 * V0 ** 2  # quarter rod, 59.96 J
 
 
-def box(h):
+ROD = "1"  # the rod's material index (0 with --wall symmetry: the wall material is removed)
+
+
+def box(h, wall="rigid"):
     """[0, x1] x [y0, y1] x [0, x1]: X_MAX, Y_MIN, Y_MAX rounded outwards to multiples of h
-    (so y = 0, the wall face, and the symmetry planes are grid lines)."""
+    (so y = 0, the wall face, and the symmetry planes are grid lines). With the wall as
+    the symmetry face y- (--wall symmetry) the grid starts at y = 0."""
     up = lambda v: h * math.ceil(v / h - 1e-9)
-    y0 = -up(-Y_MIN)
+    y0 = -up(-Y_MIN) if wall == "rigid" else 0.0
     return up(X_MAX), y0, y0 + up(Y_MAX - y0)
 
 
-def write_variant(h, end, path, interval=2e-6):
-    """The deck with the grid, end time, output and include paths changed (module doc)."""
+def write_variant(h, end, path, interval=2e-6, wall="rigid"):
+    """The deck with the grid, end time, output and include paths changed (module doc).
+    wall = "symmetry": the rigid wall material and the rigid contact removed, the grid's
+    y- face (the deck's symmetry BC) moved to y = 0: a frictionless rigid wall as a mirror
+    plane (the deck's rigid contact constrains only v_y too, direction [0,1,0])."""
     text = open(DECK, encoding="latin-1").read()
+    if wall == "symmetry":
+        a = text.index("<material>")
+        b = text.index("</material>", a) + len("</material>")
+        text = text[:a] + text[b:]
+        a = text.index("<contact>")
+        b = text.index("</contact>", a) + len("</contact>")
+        text = text[:a] + text[b:]
     text = text.replace('href="../MaterialData/', 'href="' + os.path.join(DECKS, "MaterialData") + "/")
     text = re.sub(r"<maxTime>[^<]*</maxTime>", f"<maxTime>{end:.6e}</maxTime>", text)
     # Output every `interval` (reductions and particles alike): only the particle
@@ -77,8 +100,9 @@ def write_variant(h, end, path, interval=2e-6):
         text = text.replace(f'<save label = "{label}"/>', "")
     text = text.replace('<save label = "StrainEnergy"/>',
                         '<save label = "StrainEnergy"/>\n    <save label = "AccStrainEnergy"/>\n'
-                        '    <save label = "PlasticWork"/>\n    <save label = "p.particleID"/>')
-    x1, y0, y1 = box(h)
+                        '    <save label = "PlasticWork"/>\n    <save label = "p.particleID"/>\n'
+                        + "".join(f'    <save label = "{l}"/>\n' for l in LEDGER))
+    x1, y0, y1 = box(h, wall)
     nx, ny = int(round(x1 / h)), int(round((y1 - y0) / h))
     text = re.sub(r"<lower>[^<]*</lower>", f"<lower>[0.0,{y0:.9e},0.0]</lower>", text)
     text = re.sub(r"<upper>[^<]*</upper>", f"<upper>[{x1:.9e},{y1:.9e},{x1:.9e}]</upper>", text)
@@ -104,7 +128,7 @@ def read_dat(path):
 
 def extract(tephra, out, var, step="last"):
     """{particle id: values} of material 1 (the rod) at the given output step."""
-    text = subprocess.run([tephra, "extract", out, "--var", var, "--material", "1", "--step", str(step)],
+    text = subprocess.run([tephra, "extract", out, "--var", var, "--material", ROD, "--step", str(step)],
                           check=True, capture_output=True, text=True).stdout
     rdr = csv.reader(text.splitlines())
     head = next(rdr)
@@ -162,6 +186,16 @@ def energy(out):
     return ke, se, wp, acc
 
 
+def ledger(out):
+    """The ledger's values at the last output, {label: J} (empty if the run did not save them)."""
+    res = {}
+    for l in LEDGER:
+        path = os.path.join(out, l + ".dat")
+        if os.path.exists(path):
+            res[l] = read_dat(path)[-1][1]
+    return res
+
+
 def richardson(h, f):
     """Observed order and extrapolated value from three spacings with a common ratio."""
     r = h[0] / h[1]
@@ -181,16 +215,19 @@ def main():
     ap.add_argument("--threads", type=int, default=1)
     ap.add_argument("--interval", type=float, default=2e-6)
     ap.add_argument("--no-run", action="store_true")
+    ap.add_argument("--wall", choices=("rigid", "symmetry"), default="rigid")
     a = ap.parse_args()
+    global ROD
+    ROD = "1" if a.wall == "rigid" else "0"
     tephra = os.path.join(os.path.abspath(a.build), "bin", "tephra")
     hs = [float(v) * 1e-3 for v in a.h.split(",")]
     results = []
     for h in hs:
-        d = os.path.join(a.work, f"h{h * 1e3:.4f}")
+        d = os.path.join(a.work, f"h{h * 1e3:.4f}" + ("" if a.wall == "rigid" else "_symmetry"))
         deck, out = os.path.join(d, "deck.ups"), os.path.join(d, "out")
         wall = float("nan")
         if not a.no_run:
-            write_variant(h, a.end, deck, a.interval)
+            write_variant(h, a.end, deck, a.interval, a.wall)
             t0 = time.time()
             with open(os.path.join(d, "log.txt"), "w") as log:
                 rc = subprocess.run([tephra, deck, "--output", out, "--threads", str(a.threads)],
@@ -219,6 +256,7 @@ def main():
         t05 = next((r[0] for r in ke if r[1] < 0.005 * ke0), float("nan"))
         d2 = (ke0 - ke[1][1] - se[1][1] - wp[1][1]) / ke0  # at the first output after t = 0
         worst = max(((ke0 - (k[1] + s_[1] + w[1])) / ke0 for k, s_, w in zip(ke, se, wp)), default=float("nan"))
+        lg = ledger(out)
         res = dict(h=h, wall=wall, steps=steps, t_end=t_end, ke0=ke0, ke=ke[-1][1], se=se[-1][1], wp=wp[-1][1],
                    acc=acc[-1][1], deficit=deficit, deficit_first=d2, worst=worst, t1=t1, t05=t05, **s)
         results.append(res)
@@ -234,12 +272,25 @@ def main():
               f"AccSE {acc[-1][1]:.4f} J; deficit (KE0-KE-SE-Wp)/KE0 = {deficit * 100:.3f} % "
               f"(largest over the run {worst * 100:.3f} %; {d2 * 100:.3f} % at {ke[1][0] * 1e6:.2f} us); KE < 1 % KE0 from {t1 * 1e6:.1f} us, "
               f"< 0.5 % from {t05 * 1e6:.1f} us")
+        if len(lg) == len(LEDGER):
+            c, b, g, tr = (lg[l] for l in LEDGER)
+            mismatch = -g - se[-1][1] - wp[-1][1]  # work the node forces took from KE minus SE + Wp
+            res.update(contact=c / ke0, boundary=b / ke0, transfer=tr / ke0, mismatch=mismatch / ke0,
+                       acc_mismatch=(-g - acc[-1][1]) / ke0)
+            print(f"  ledger (% of KE0): wall/contact {100 * c / ke0:.3f}, grid BCs {100 * b / ke0:.4f}, "
+                  f"FLIP transfer {100 * tr / ke0:.4f}, grid-force work - (SE + Wp) {100 * mismatch / ke0:.4f} "
+                  f"(- AccStrainEnergy: {100 * (-g - acc[-1][1]) / ke0:.4f}); sum {100 * (c + b + tr + mismatch) / ke0:.3f} "
+                  f"vs deficit {100 * deficit:.3f}; identity KE - KE0 - (G - C - B - T) = "
+                  f"{(ke[-1][1] - ke0 - (g - c - b - tr)) / ke0:.2e} KE0")
     if len(results) == 3:
         hh = [r["h"] for r in results]
         print("Richardson (ratio %.4f):" % (hh[0] / hh[1]))
         for key, scale, unit in (("L", 1e3, "mm"), ("R", 1e3, "mm"), ("L_centres", 1e3, "mm"),
                                  ("R_centres", 1e3, "mm"), ("L_rel", 1, ""), ("R_rel", 1, ""), ("deficit", 100, "%"),
-                                 ("deficit_first", 100, "%")):
+                                 ("deficit_first", 100, "%"), ("contact", 100, "%"), ("transfer", 100, "%"),
+                                 ("mismatch", 100, "%")):
+            if not all(key in r for r in results):
+                continue
             f = [r[key] for r in results]
             p, finf = richardson(hh, f)
             print(f"  {key}: {' -> '.join(f'{v * scale:.4f}' for v in f)} {unit}; observed order {p:.2f}, "
