@@ -6,6 +6,7 @@
 #include "core/base/Log.h"
 #include "core/deck/DeckLoader.h"
 #include "core/deck/DeckNode.h"
+#include "mpm/Axisymmetric.h"
 #include "mpm/MpmComponent.h"
 
 namespace tephra {
@@ -46,12 +47,12 @@ void read_loads_and_drivers(const Deck& deck, MpmSetup& setup) {
       if (save->attribute("label") == std::optional<std::string>("AccStrainEnergy")) setup.accumulate_strain_energy = true;
       if (save->attribute("label") == std::optional<std::string>("g.stressFS")) setup.node_stress = true;
     }
-  // Axisymmetric (mpm/Axisymmetric.h): x = r >= 0, one hoop cell in z, linear interpolation.
+  // Axisymmetric (mpm/Axisymmetric.h): x = r >= 0, one hoop cell in z; linear, gimp or cpdi.
   if (setup.flags.axisymmetric) {
     const DeckNode& flag = root.require_child("MPM").require_child("axisymmetric");
-    if (setup.flags.interpolator.kind != InterpolatorKind::Linear)
+    if (axisymmetric_stencil_width(setup.flags.interpolator.kind) == 0)
       flag.missing_feature("axisymmetric MPM with the '" + interpolator_name(setup.flags.interpolator.kind) +
-                           "' interpolator (implemented: linear)");
+                           "' interpolator (implemented: linear, gimp, cpdi)");
     if (setup.grid.cells[2] != 1) flag.fail("axisymmetric MPM needs exactly one cell in z (the hoop direction)");
     if (setup.grid.lower[0] < 0.0) flag.fail("axisymmetric MPM: x is the radius, the grid must start at x >= 0");
     if ((setup.grid.periodic.array() != 0).any()) flag.missing_feature("axisymmetric MPM with periodic directions");
