@@ -93,12 +93,11 @@ void check_driver_combinations(const Deck& deck, MpmSetup& setup) {
   if (setup.flags.axisymmetric && setup.contact && setup.materials.size() > 1)
     root.require_child("MPM").require_child("axisymmetric").missing_feature(
         "axisymmetric MPM with contact (normals from the axisymmetric gradients)");
-  // Heat conduction (mpm/thermal) sums node temperatures without the periodic
-  // fold and with Cartesian volumes: not combined with either yet. A scene
-  // whose temperature stays uniform never conducts, so the run stops (exit 3,
-  // naming this element) only at the first step that would conduct.
-  if ((setup.grid.periodic.array() != 0).any())
-    setup.conduction_unsupported = {root.require_child("Grid").location(), "periodic MPM with heat conduction"};
+  // Heat conduction (mpm/thermal) uses Cartesian volumes: not combined with
+  // axisymmetric runs yet (periodic directions fold the grid temperature and
+  // rate, mpm/PeriodicGrid.h). A scene whose temperature stays uniform never
+  // conducts, so the run stops (exit 3, naming this element) only at the
+  // first step that would conduct.
   if (setup.flags.axisymmetric)
     setup.conduction_unsupported = {root.require_child("MPM").require_child("axisymmetric").location(),
                                     "axisymmetric MPM with heat conduction"};
