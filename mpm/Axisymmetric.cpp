@@ -2,6 +2,9 @@
 
 #include <cmath>
 
+#include "mpm/shape/ShapeAxisymmetric.h"
+#include "mpm/shape/ShapeGimp.h"
+
 namespace tephra {
 
 void make_axisymmetric_particles(const Vec3& h, double density, Particles& p) {
@@ -13,31 +16,120 @@ void make_axisymmetric_particles(const Vec3& h, double density, Particles& p) {
   }
 }
 
-long compute_axisymmetric_stencils(const Particles& p, const NodeGrid& g, Stencils& s) {
-  const std::size_t np = p.size();
-  s.width = 8;
-  s.axis_nodes = 0;  // the flat form
-  s.node.resize(np * 8);
-  s.w.resize(np * 8);
-  s.grad.resize(np * 8);
-  const int k0 = g.extra[2];  // the two hoop planes: the domain's one cell
-  for (std::size_t i = 0; i < np; ++i) {
-    const double r = p.x[i][0];
-    const double xi = (p.x[i][0] - g.origin[0]) / g.h[0], eta = (p.x[i][1] - g.origin[1]) / g.h[1];
-    const int ix = int(std::floor(xi)), iy = int(std::floor(eta));
-    if (!(r > 0.0) || ix < 0 || iy < 0 || ix + 1 >= g.n[0] || iy + 1 >= g.n[1] || k0 + 1 >= g.n[2]) return long(i);
-    const double fx = xi - ix, fy = eta - iy;
-    const double Nx[2] = {1.0 - fx, fx}, Ny[2] = {1.0 - fy, fy};
-    const double dNx[2] = {-1.0 / g.h[0], 1.0 / g.h[0]}, dNy[2] = {-1.0 / g.h[1], 1.0 / g.h[1]};
-    std::size_t e = i * 8;
+namespace {
+
+// Linear (Vaango's AxiLinearInterpolator): 2 x 2 in-plane nodes.
+bool linear_entries(const Particles& p, std::size_t i, const NodeGrid& g, int k0, std::size_t* node, double* w,
+                    Vec3* grad) {
+  const double r = p.x[i][0];
+  const double xi = (p.x[i][0] - g.origin[0]) / g.h[0], eta = (p.x[i][1] - g.origin[1]) / g.h[1];
+  const int ix = int(std::floor(xi)), iy = int(std::floor(eta));
+  if (!(r > 0.0) || ix < 0 || iy < 0 || ix + 1 >= g.n[0] || iy + 1 >= g.n[1]) return false;
+  const double fx = xi - ix, fy = eta - iy;
+  const double Nx[2] = {1.0 - fx, fx}, Ny[2] = {1.0 - fy, fy};
+  const double dNx[2] = {-1.0 / g.h[0], 1.0 / g.h[0]}, dNy[2] = {-1.0 / g.h[1], 1.0 / g.h[1]};
+  int e = 0;
+  for (int b = 0; b < 2; ++b)
+    for (int a = 0; a < 2; ++a)
+      for (int c = 0; c < 2; ++c, ++e) {
+        const double S = 0.5 * Nx[a] * Ny[b];
+        node[e] = g.index(ix + a, iy + b, k0 + c);
+        w[e] = S;
+        grad[e] = Vec3(0.5 * dNx[a] * Ny[b], 0.5 * Nx[a] * dNy[b], S / r);
+      }
+  return true;
+}
+
+// Axisymmetric GIMP (ShapeAxisymmetric.h): 3 radial x 3 axial nodes. A node
+// outside the grid is accepted only with a zero factor (it then points at a
+// valid node, weight 0).
+bool gimp_entries(const Particles& p, std::size_t i, const NodeGrid& g, int k0, std::size_t* node, double* w,
+                  Vec3* grad) {
+  const double r = p.x[i][0];
+  if (!(r > 0.0)) return false;
+  const double lr = 0.5 * p.psize[i](0, 0) * g.h[0], lz = 0.5 * p.psize[i](1, 1);  // lz in index units
+  double a, b;
+  axi_gimp_interval(r, lr, a, b);
+  const int first = int(std::floor((a - g.origin[0]) / g.h[0]));
+  AxiRadialFactor fr[3];
+  for (int k = 0; k < 3; ++k) fr[k] = axi_gimp_radial(g.origin[0] + (first + k) * g.h[0], g.h[0], a, b);
+  const ShapeAxis az = gimp_axis((p.x[i][1] - g.origin[1]) / g.h[1], lz);
+  int e = 0;
+  for (int bz = 0; bz < 3; ++bz)
+    for (int ar = 0; ar < 3; ++ar) {
+      const int ix = first + ar, iy = az.first + bz;
+      const double S = 0.5 * fr[ar].S * az.S[bz];
+      const Vec3 gr(0.5 * fr[ar].G * az.S[bz], 0.5 * fr[ar].S * az.dS[bz] / g.h[1], 0.5 * fr[ar].T * az.S[bz]);
+      const bool inside = ix >= 0 && iy >= 0 && ix < g.n[0] && iy < g.n[1];
+      if (!inside && (S != 0.0 || gr != Vec3::Zero())) return false;
+      for (int c = 0; c < 2; ++c, ++e) {
+        node[e] = inside ? g.index(ix, iy, k0 + c) : g.index(0, 0, k0 + c);
+        w[e] = inside ? S : 0.0;
+        grad[e] = inside ? gr : Vec3::Zero();
+      }
+    }
+  return true;
+}
+
+// Axisymmetric CPDI (ShapeAxisymmetric.h): 4 corners x 2 x 2 in-plane nodes.
+bool cpdi_entries(const Particles& p, std::size_t i, const NodeGrid& g, int k0, std::size_t* node, double* w,
+                  Vec3* grad) {
+  const double r = p.x[i][0];
+  if (!(r > 0.0)) return false;
+  const Eigen::Matrix2d e2 = p.F[i].topLeftCorner<2, 2>() * p.psize[i].topLeftCorner<2, 2>();
+  const Vec3 xi((p.x[i][0] - g.origin[0]) / g.h[0], (p.x[i][1] - g.origin[1]) / g.h[1], 0.0);
+  Vec3 corner[4];
+  Eigen::Vector2d gfac[4];
+  if (!axi_cpdi_corners(xi, e2, g.h, corner, gfac)) return false;
+  int e = 0;
+  for (int c = 0; c < 4; ++c) {
+    const int ix = int(std::floor(corner[c][0])), iy = int(std::floor(corner[c][1]));
+    if (ix < 0 || iy < 0 || ix + 1 >= g.n[0] || iy + 1 >= g.n[1]) return false;
+    const double fx = corner[c][0] - ix, fy = corner[c][1] - iy;
     for (int b = 0; b < 2; ++b)
-      for (int a = 0; a < 2; ++a)
-        for (int c = 0; c < 2; ++c, ++e) {
-          const double S = 0.5 * Nx[a] * Ny[b];
-          s.node[e] = g.index(ix + a, iy + b, k0 + c);
-          s.w[e] = S;
-          s.grad[e] = Vec3(0.5 * dNx[a] * Ny[b], 0.5 * Nx[a] * dNy[b], S / r);
+      for (int a = 0; a < 2; ++a) {
+        const double hat = (a ? fx : 1.0 - fx) * (b ? fy : 1.0 - fy);
+        const double S = 0.5 * 0.25 * hat;
+        const Vec3 gr(0.5 * hat * gfac[c][0], 0.5 * hat * gfac[c][1], S / r);
+        for (int k = 0; k < 2; ++k, ++e) {
+          node[e] = g.index(ix + a, iy + b, k0 + k);
+          w[e] = S;
+          grad[e] = gr;
         }
+      }
+  }
+  return true;
+}
+
+}  // namespace
+
+int axisymmetric_stencil_width(InterpolatorKind kind) {
+  switch (kind) {
+    case InterpolatorKind::Linear: return 8;
+    case InterpolatorKind::Gimp: return 18;
+    case InterpolatorKind::Cpdi: return 32;
+    default: return 0;
+  }
+}
+
+long compute_axisymmetric_stencils(const Particles& p, const NodeGrid& g, InterpolatorKind kind, Stencils& s) {
+  const std::size_t np = p.size();
+  const int W = axisymmetric_stencil_width(kind);
+  s.width = W;
+  s.axis_nodes = 0;  // the flat form
+  s.node.resize(np * W);
+  s.w.resize(np * W);
+  s.grad.resize(np * W);
+  const int k0 = g.extra[2];  // the two hoop planes: the domain's one cell
+  if (k0 + 1 >= g.n[2]) return np ? 0 : -1;
+  for (std::size_t i = 0; i < np; ++i) {
+    std::size_t* node = &s.node[i * W];
+    double* w = &s.w[i * W];
+    Vec3* grad = &s.grad[i * W];
+    const bool ok = kind == InterpolatorKind::Gimp   ? gimp_entries(p, i, g, k0, node, w, grad)
+                    : kind == InterpolatorKind::Cpdi ? cpdi_entries(p, i, g, k0, node, w, grad)
+                                                     : linear_entries(p, i, g, k0, node, w, grad);
+    if (!ok) return long(i);
   }
   return -1;
 }

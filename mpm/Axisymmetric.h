@@ -4,6 +4,7 @@
 // the hoop angle: one cell, whose two node planes share every weight. All
 // extensive quantities are per radian:
 //   V_p = A_p r_p (A_p = h_x h_y / (res_x res_y) the particle's area), m_p = rho V_p.
+// GIMP and CPDI: mpm/shape/ShapeAxisymmetric.h (the same hoop convention).
 // Linear (axisymmetric) shape functions (Vaango's AxiLinearInterpolator):
 //   S = N_x(r) N_y(z) / 2 on each of the two hoop planes,
 //   grad S = (dN_x/dr N_y / 2, N_x dN_y/dz / 2, S / r_p),
@@ -27,9 +28,15 @@ namespace tephra {
 // per-radian ones: V = (V_3d / dz_p) r, m = rho V; dz_p = h_z / res_z.
 void make_axisymmetric_particles(const Vec3& h, double density, Particles& p);
 
-// Width-8 stencils as above. Returns the first particle outside the grid (or
-// with r <= 0), or -1.
-long compute_axisymmetric_stencils(const Particles& p, const NodeGrid& g, Stencils& s);
+// Entries per particle: linear 8, gimp 18 (3 x 3 in-plane nodes x 2 hoop
+// planes), cpdi 32 (4 corners x 2 x 2 nodes x 2 planes); 0 for the others.
+int axisymmetric_stencil_width(InterpolatorKind kind);
+
+// The stencils of `kind` (linear above; gimp and cpdi: mpm/shape/ShapeAxisymmetric.h):
+// grad = (dS/dr, dS/dz, T) with T the hoop factor (S / r_p for linear and cpdi,
+// the volume average of N / r for gimp). Returns the first particle outside
+// the grid (or with r <= 0, or a degenerate CPDI domain), or -1.
+long compute_axisymmetric_stencils(const Particles& p, const NodeGrid& g, InterpolatorKind kind, Stencils& s);
 
 // f_int with the hoop term (overwrites nothing: adds into g.internal_force).
 void axisymmetric_internal_force(const Particles& p, const Stencils& s, NodeGrid& g);

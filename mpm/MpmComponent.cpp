@@ -144,7 +144,7 @@ void MpmComponent::interpolate_to_grid(MpmMaterial& m, int step, const char* pha
                          compute_axis_stencils(m.particles, m.grid, setup_.flags.interpolator, m.stencils);
   const long bad = axis_form ? -1
                    : setup_.flags.axisymmetric
-                       ? compute_axisymmetric_stencils(m.particles, m.grid, m.stencils)
+                       ? compute_axisymmetric_stencils(m.particles, m.grid, setup_.flags.interpolator.kind, m.stencils)
                        : compute_stencils(m.particles, m.grid, setup_.flags.interpolator, m.stencils);
   if (bad >= 0) fail_particle(m, std::size_t(bad), step, phase, "particle is outside the grid");
   // Columns into the scatter order when enough particles changed block

@@ -6,6 +6,7 @@
 #include "core/base/Log.h"
 #include "core/deck/DeckLoader.h"
 #include "core/deck/DeckNode.h"
+#include "mpm/Axisymmetric.h"
 #include "mpm/MpmComponent.h"
 
 namespace tephra {
@@ -51,12 +52,12 @@ void read_loads_and_drivers(const Deck& deck, MpmSetup& setup) {
         if (save->attribute("label") == std::optional<std::string>(l)) setup.energy_ledger = true;
       if (save->attribute("label") == std::optional<std::string>("g.stressFS")) setup.node_stress = true;
     }
-  // Axisymmetric (mpm/Axisymmetric.h): x = r >= 0, one hoop cell in z, linear interpolation.
+  // Axisymmetric (mpm/Axisymmetric.h): x = r >= 0, one hoop cell in z; linear, gimp or cpdi.
   if (setup.flags.axisymmetric) {
     const DeckNode& flag = root.require_child("MPM").require_child("axisymmetric");
-    if (setup.flags.interpolator.kind != InterpolatorKind::Linear)
+    if (axisymmetric_stencil_width(setup.flags.interpolator.kind) == 0)
       flag.missing_feature("axisymmetric MPM with the '" + interpolator_name(setup.flags.interpolator.kind) +
-                           "' interpolator (implemented: linear)");
+                           "' interpolator (implemented: linear, gimp, cpdi)");
     if (setup.grid.cells[2] != 1) flag.fail("axisymmetric MPM needs exactly one cell in z (the hoop direction)");
     if (setup.grid.lower[0] < 0.0) flag.fail("axisymmetric MPM: x is the radius, the grid must start at x >= 0");
     if ((setup.grid.periodic.array() != 0).any()) flag.missing_feature("axisymmetric MPM with periodic directions");
@@ -97,12 +98,11 @@ void check_driver_combinations(const Deck& deck, MpmSetup& setup) {
   if (setup.flags.axisymmetric && setup.contact && setup.materials.size() > 1)
     root.require_child("MPM").require_child("axisymmetric").missing_feature(
         "axisymmetric MPM with contact (normals from the axisymmetric gradients)");
-  // Heat conduction (mpm/thermal) sums node temperatures without the periodic
-  // fold and with Cartesian volumes: not combined with either yet. A scene
-  // whose temperature stays uniform never conducts, so the run stops (exit 3,
-  // naming this element) only at the first step that would conduct.
-  if ((setup.grid.periodic.array() != 0).any())
-    setup.conduction_unsupported = {root.require_child("Grid").location(), "periodic MPM with heat conduction"};
+  // Heat conduction (mpm/thermal) uses Cartesian volumes: not combined with
+  // axisymmetric runs yet (periodic directions fold the grid temperature and
+  // rate, mpm/PeriodicGrid.h). A scene whose temperature stays uniform never
+  // conducts, so the run stops (exit 3, naming this element) only at the
+  // first step that would conduct.
   if (setup.flags.axisymmetric)
     setup.conduction_unsupported = {root.require_child("MPM").require_child("axisymmetric").location(),
                                     "axisymmetric MPM with heat conduction"};

@@ -64,7 +64,7 @@ struct MpmFlags {
   // <use_prescribed_deformation> (Vaango also spells it UsePrescribedDeformation):
   // F follows <prescribed_deformation_file> (read in MpmDeck; mpm/PrescribedDeformation.h).
   bool use_prescribed_deformation = false;
-  // <axisymmetric>: x = r, y = z, one hoop cell (mpm/Axisymmetric.h); linear interpolation only.
+  // <axisymmetric>: x = r, y = z, one hoop cell (mpm/Axisymmetric.h); linear, gimp or cpdi.
   bool axisymmetric = false;
   int deformation_gradient_terms = 1;
   // <test_for_neg_temps_mpm> (also spelled <testForNegTemps_mpm>; Vaango's

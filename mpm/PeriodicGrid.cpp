@@ -58,6 +58,14 @@ void fold_internal_force(const PeriodicNodes& map, NodeGrid& g) {
   fold(map.canonical, g.internal_force, Vec3::Zero().eval());
 }
 
+void fold_mass_weighted(const PeriodicNodes& map, const std::vector<double>& mass, std::vector<double>& f) {
+  if (!map.active()) return;
+  for (std::size_t n = 0; n < f.size(); ++n) f[n] *= mass[n];  // back to the particle sum (mass already folded)
+  fold(map.canonical, f, 0.0);
+  for (std::size_t n = 0; n < f.size(); ++n)
+    if (mass[n] > 0.0) f[n] /= mass[n];
+}
+
 int periodic_ghost_layers(InterpolatorKind kind) {
   switch (kind) {
     case InterpolatorKind::Linear: return 0;

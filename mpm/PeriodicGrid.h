@@ -26,7 +26,9 @@
 // stops the run (the particle's stencil leaves the grid: exit 4). The
 // boundary-modified cubic B-spline (4thorderBS) has no periodic form
 // (MissingFeature). Contact normals across a periodic face are not folded
-// (contact with periodic directions is a MissingFeature), nor heat conduction.
+// (contact with periodic directions is a MissingFeature). Heat conduction:
+// the grid temperature and the conduction rate are folded like the sums
+// (fold_mass_weighted, mpm/thermal/ThermalPhase.cpp).
 //
 // A periodic face is not a domain boundary (Uintah; ICE here does the same,
 // ice/IceDeck.cpp): its velocity and temperature BCs are not applied
@@ -58,6 +60,11 @@ void fold_particle_sums(const PeriodicNodes& map, NodeGrid& g);
 
 // The same for f_int.
 void fold_internal_force(const PeriodicNodes& map, NodeGrid& g);
+
+// A node field f = (particle sum) / m_g divided by the folded mass (the grid
+// temperature and the conduction rate, mpm/thermal): f <- fold(f m) / m on
+// every alias set, so each alias holds (sum over the set) / m_g.
+void fold_mass_weighted(const PeriodicNodes& map, const std::vector<double>& mass, std::vector<double>& f);
 
 // Ghost node layers a periodic direction needs for `kind`; -1: no periodic form (4thorderBS).
 int periodic_ghost_layers(InterpolatorKind kind);

@@ -8,6 +8,7 @@
 #include "core/base/PhaseTimers.h"
 #include "core/base/Errors.h"
 #include "mpm/MpmComponent.h"
+#include "mpm/PeriodicGrid.h"
 #include "mpm/thermal/HeatConduction.h"
 #include "mpm/thermal/TemperatureBoundary.h"
 #include "mpm/contact/ContactNormals.h"
@@ -79,12 +80,16 @@ void MpmComponent::compute_heat_rates(double dt) {
     MpmMaterial& m = mats[i];
     temperature_to_grid(m.particles, m.stencils, m.grid, m.thermal);
     sum_node_doubles(m.thermal.temperature);  // over the MPI ranks (divided by the global m_g already)
+    fold_mass_weighted(periodic_, m.grid.mass, m.thermal.temperature);  // periodic aliases (mpm/PeriodicGrid.h)
     if (faces && has_temperature_bcs(m.bcs)) {
       T_free[i] = m.thermal.temperature;
       apply_temperature_bcs(m.bcs, m.grid, m.thermal.temperature);
     }
     if (setup_.flags.explicit_heat_conduction && m.thermal_conductivity > 0.0)
+    {
       add_conduction_rate(m.particles, m.stencils, m.grid, m.thermal_conductivity, m.specific_heat, m.thermal);
+      fold_mass_weighted(periodic_, m.grid.mass, m.thermal.rate);  // the rate holds conduction only here
+    }
     sum_node_doubles(m.thermal.rate);  // over the MPI ranks (0 before the conduction term)
   }
   if (setup_.thermal_contact && mats.size() > 1) {
