@@ -160,6 +160,159 @@ OfflineCurve integrate_adiabatic(double ep_end, Sigma&& sigma_y, Theta&& theta) 
   }
   return c;
 }
+// Offline integration along the deck's own loading path in time (not at a constant plastic
+// rate): the piston holds the total log strain rate at l_zz = 4000 /s from t = 0, the
+// lateral faces are free (uniaxial stress), so with the hypo-elastic stress rate
+//   dq/dt = E(T, p_bar) (4000 - eps_p_dot),   E = 9KG/(3K + G), K = rho_0 C_0^2 (the deck's
+//   Mie-Grueneisen EOS at small strain), G = mu(T, p_bar) of the deck's shear model,
+// and, while plastic, q = sigma_y(eps_p, eps_p_dot, T, sigma_e, p_bar): the plastic rate
+// rises from 0 at yield towards 4000 /s over the elastic-plastic transition (the law's
+// rate dependence sets how fast); heating dT = chi q deps_p/(rho c_p), MTS dsigma_e =
+// theta deps_p. Backward Euler in time with step h: Delta = deps_p solves (bisection;
+// the residual decreases in Delta)
+//   q_n + E (4000 h - Delta) = sigma_y(eps_p,n + Delta, Delta/h, T_n+1, sigma_e,n+1, p_bar,n),
+// Delta = 0 (elastic) when the left side at Delta = 0 is below sigma_y at Delta -> 0.
+// Returns the plastic points (eps_p, q), eps_p increasing. First order in h: the test
+// prints the change from h to h/2 as the reference's own error.
+struct PathCurve {
+  std::vector<double> ep, q, rate;
+  double at(double e) const {  // linear interpolation in eps_p
+    const std::size_t k = std::min<std::size_t>(
+        ep.size() - 1, std::max<std::size_t>(1, std::lower_bound(ep.begin(), ep.end(), e) - ep.begin()));
+    return q[k - 1] + (e - ep[k - 1]) / (ep[k] - ep[k - 1]) * (q[k] - q[k - 1]);
+  }
+  double rate_at(double e) const {
+    const std::size_t k = std::min<std::size_t>(ep.size() - 1, std::lower_bound(ep.begin(), ep.end(), e) - ep.begin());
+    return rate[k];
+  }
+};
+// law(ep, rate, T, sigma_e, p_bar, rho); theta(rate, T, sigma_e) (0 but for MTS); shear(T, p_bar, rho).
+// The total strain history: the run's own equivalent deviatoric log strain
+// e_eq(t) = (2/3)(ln F_zz - (ln F_xx + ln F_yy)/2) (piecewise linear between its steps) when given
+// (the kinematics as the particle saw them: piston and lateral inertia), else uniaxial stress at 4000 /s.
+struct StrainHistory {
+  std::vector<double> t, eps, J;  // the run's step times, e_eq and J = det F
+  void record(double time, const Mat3& F) {
+    t.push_back(time);
+    J.push_back(F.determinant());
+    eps.push_back(2.0 / 3.0 * (std::log(F(2, 2)) - 0.5 * (std::log(F(0, 0)) + std::log(F(1, 1)))));
+  }
+  double J_at(double s) const {  // J at the run's step that starts at or before s (start-of-step state)
+    const std::size_t k = std::upper_bound(t.begin(), t.end(), s * (1 + 1e-12)) - t.begin();
+    return J[std::min(J.size() - 1, k > 0 ? k - 1 : 0)];
+  }
+  double at(double s) const {
+    const std::size_t k = std::min<std::size_t>(
+        t.size() - 1, std::max<std::size_t>(1, std::lower_bound(t.begin(), t.end(), s) - t.begin()));
+    return eps[k - 1] + (s - t[k - 1]) / (t[k] - t[k - 1]) * (eps[k] - eps[k - 1]);
+  }
+};
+template <class Law, class Theta, class Shear>
+PathCurve integrate_loading_path(double t_end, double h, Law&& law, Theta&& theta, Shear&& shear,
+                                 const StrainHistory& strain = {}) {
+  const double chi = 0.9, rho = 8930.0, cp = 414.0, K = 8930.0 * 3940.0 * 3940.0;
+  PathCurve c;
+  double q = 0, ep = 0, T = 696.0, se = 0, p_bar = 0;
+  // h = 0: the run's own step times (strain.t), i.e. the same time discretisation as the deck.
+  std::vector<double> times;
+  if (h > 0) {
+    for (double t = 0; t < t_end; t += h) times.push_back(t);
+    times.push_back(t_end);
+  } else {
+    times = strain.t;
+  }
+  for (std::size_t n = 0; n + 1 < times.size(); ++n) {
+    const double t = times[n];
+    h = times[n + 1] - t;
+    // With the run's history: its volume J (start of step), rho = rho_0/J and the small-strain
+    // Mie-Grueneisen pressure p_bar = K (1 - J) (the laws' and moduli's pressure and density
+    // inputs: SCG mu(p, eta), PTW mu(rho) and xi_dot(rho)); else p_bar = -q/3, rho = rho_0.
+    double rho_t = rho;
+    if (!strain.t.empty()) {
+      const double J = strain.J_at(t);
+      rho_t = rho / J;
+      p_bar = K * (1 - J);
+    }
+    const double G = shear(T, p_bar, rho_t), E = 9 * K * G / (3 * K + G);
+    // Uniaxial stress at 4000 /s: dq = E (4000 h - deps_p). The run's history: dq = 3G (de_eq - deps_p),
+    // de_eq = (2/3) d(ln F_zz - ln F_xx) (axisymmetric: the particle's lateral strain as it happened,
+    // which at first lags the uniaxial-stress contraction: the particle's lateral inertia).
+    const bool uniaxial = strain.t.size() < 2;
+    const double d_total = uniaxial ? 4000.0 * h : strain.at(t + h) - strain.at(t);
+    const double M = uniaxial ? E : 3 * G;
+    auto q_of = [&](double d) { return q + M * (d_total - d); };
+    auto T_of = [&](double d) { return T + chi * q_of(d) * d / (rho * cp); };
+    auto residual = [&](double d) {
+      const double T1 = T_of(d);
+      const double rate = std::max(d / h, 1e-8);  // the models' rate floor (FlowAd.h kMinPlasticRate)
+      return q_of(d) - law(ep + d, rate, T1, se + theta(rate, T1, se) * d, p_bar, rho_t);
+    };
+    double d = 0;
+    if (residual(1e-300) > 0) {  // plastic
+      double lo = 0, hi = d_total + q / M;  // residual(hi) = -sigma_y < 0
+      for (int i = 0; i < 80; ++i) (residual(0.5 * (lo + hi)) > 0 ? lo : hi) = 0.5 * (lo + hi);
+      d = 0.5 * (lo + hi);
+    }
+    const double T1 = T_of(d);
+    se += theta(std::max(d / h, 1e-8), T1, se) * d;
+    q = q_of(d);
+    T = T1;
+    ep += d;
+    p_bar = -q / 3.0;
+    if (d > 0) c.ep.push_back(ep), c.q.push_back(q), c.rate.push_back(d / h);
+  }
+  return c;
+}
+// max over the run's plastic steps with eps_p >= 0.01 of |q - q_path(eps_p)|/q_path.
+double worst_against_path(const std::vector<std::pair<double, double>>& ep_q, const PathCurve& c, double* at_ep) {
+  double worst = 0;
+  for (const auto& [ep, q] : ep_q)
+    if (ep >= 0.01 && std::abs(q / c.at(ep) - 1) > worst) worst = std::abs(q / c.at(ep) - 1), *at_ep = ep;
+  return worst;
+}
+// The path reference at steps h and h/2 against the run; asserts 1 % when `assert_1pct`.
+template <class Law, class Theta, class Shear>
+double check_against_path(const std::string& name, const std::vector<std::pair<double, double>>& ep_q, Law&& law,
+                          Theta&& theta, Shear&& shear, const StrainHistory& strain,
+                          double* continuous_error = nullptr) {
+  const double h = 5e-9;
+  {  // the same at a constant total rate of 4000 /s (printed: how much the run's own kinematics matter)
+    const PathCurve c0 = integrate_loading_path(1.2e-4, h, law, theta, shear);
+    double at0 = 0;
+    const double w0 = worst_against_path(ep_q, c0, &at0);
+    std::printf("%s: vs the loading path at a constant total rate 4000 /s: max |q/q_path - 1| = %.3e at eps_p = "
+                "%.4f; plastic rate there at eps_p = 0.001, 0.01, 0.03: %.0f, %.0f, %.0f /s\n", name.c_str(), w0,
+                at0, c0.rate_at(0.001), c0.rate_at(0.01), c0.rate_at(0.03));
+  }
+  std::printf("%s: run's equivalent deviatoric strain rate de_eq/dt over steps 1-8 (uniaxial stress: 4000 /s):",
+              name.c_str());
+  for (std::size_t k = 1; k < std::min<std::size_t>(9, strain.t.size()); ++k)
+    std::printf(" %.0f", (strain.eps[k] - strain.eps[k - 1]) / (strain.t[k] - strain.t[k - 1]));
+  std::printf(" /s (dt %.2e s)\n", strain.t[2] - strain.t[1]);
+  const PathCurve c1 = integrate_loading_path(1.2e-4, h, law, theta, shear, strain);
+  const PathCurve c2 = integrate_loading_path(1.2e-4, h / 2, law, theta, shear, strain);
+  double ref_change = 0, at1 = 0, at2 = 0;
+  for (const auto& [ep, q] : ep_q)
+    if (ep >= 0.01) ref_change = std::max(ref_change, std::abs(c1.at(ep) / c2.at(ep) - 1));
+  const double w1 = worst_against_path(ep_q, c1, &at1), w2 = worst_against_path(ep_q, c2, &at2);
+  // The same integration on the run's own time steps (backward Euler, rate = Delta eps_p/dt as the
+  // return): the run's time-step error at the deck's dt is w2 - (this).
+  const PathCurve cr = integrate_loading_path(1.2e-4, 0.0, law, theta, shear, strain);
+  double atr = 0;
+  const double wr = worst_against_path(ep_q, cr, &atr);
+  std::printf("%s: path reference plastic rate at eps_p = 0.001, 0.003, 0.01, 0.03: %.0f, %.0f, %.0f, %.0f /s\n",
+              name.c_str(), c2.rate_at(0.001), c2.rate_at(0.003), c2.rate_at(0.01), c2.rate_at(0.03));
+  std::printf("%s: stress-plastic strain curve vs offline integration along the run's total-strain history "
+              "(e_eq(t), hypo-elastic then plastic, adiabatic): max |q/q_path - 1| = %.3e at eps_p = %.4f (h = %.1e s), "
+              "%.3e at %.4f (h/2); reference change h -> h/2 %.2e\n",
+              name.c_str(), w1, at1, h, w2, at2, ref_change);
+  std::printf("%s: vs the same integration on the run's own time steps (dt %.2e s): max |q/q_path - 1| = %.3e at "
+              "eps_p = %.4f; the run's time-step error (h -> 0 vs the run's dt) %s 1 %%\n",
+              name.c_str(), strain.t[2] - strain.t[1], wr, atr, w2 < 0.01 ? "within" : "NOT within");
+  if (continuous_error) *continuous_error = w2;
+  return wr;
+}
+
 // max over the plastic steps with eps_p >= 0.01 of |q - sigma_offline(eps_p)|/sigma_offline.
 double worst_against_offline(const std::vector<std::pair<double, double>>& ep_q, const OfflineCurve& c) {
   double worst = 0, at = 0;
@@ -250,16 +403,21 @@ TEST(MetalDecks, A4AdiabaticCopperFollowsTheJohnsonCookLaw) {
 //   dsigma_e/deps_p = theta_0 (1 - F) + theta_IV F,  theta_0 = a_0 + a_1 ln edot + a_2 sqrt(edot) - a_3 T,
 //   F = tanh(alpha sigma_e/sigma_es)/tanh(alpha),  sigma_es = sigma_es0 exp(k/b^3 T/(g_0es mu) ln(edot/edot_es0)),
 //   mu = mu_0 - D/(exp(T_0/T) - 1) (mts_shear, VT 7.5),
-// integrated offline with adiabatic heating (integrate_adiabatic): 1.15 %, NOT within 1 % (printed).
+// integrated offline with adiabatic heating: at a constant 4000 /s in uniaxial stress
+// (integrate_adiabatic) 1.15 % (printed); along the run's own kinematics (integrate_loading_path,
+// see check_sister_deck) on the run's time steps 1.4e-4 (asserted), at h -> 0 1.11 % (printed:
+// the deck's time step through the elastic-plastic transition; NOT within 1 %).
 TEST(MetalDecks, A4MtsSisterDeckFollowsTheMtsLaw) {
   auto deck = load_deck_from_string(sister_deck_text("adiCuMTS4000s696K.ups"), "adiCuMTS4000s696K.ups",
                                     test::source_dir() + "/inputs/mpm");
   double worst = 0, prev_se = 0, last_ep = 0;
   int checks = 0;
   std::vector<std::pair<double, double>> ep_q;
+  StrainHistory strain;
   run_loaded_deck(std::move(deck), 1.2e-4, [&](double t, double dt, const MpmComponent& c) {
     const MpmMaterial& mat = c.materials()[1];
     const Particles& p = mat.particles;
+    strain.record(t, p.F[0]);
     const auto& model = static_cast<const ElasticPlastic&>(*mat.model);
     ASSERT_EQ(model.flow_->type(), "mechanical_threshold_stress");
     const double ep = p.history[0][0], rate = p.history[1][0], se = p.history[6][0];
@@ -308,7 +466,29 @@ TEST(MetalDecks, A4MtsSisterDeckFollowsTheMtsLaw) {
   const double off = worst_against_offline(ep_q, offline);
   std::printf("A4 MTS: stress-plastic strain curve vs offline adiabatic integration: max |q/sigma_offline - 1| = "
               "%.3e (sigma_offline(0.45) = %.4e Pa)\n", off, offline.at(0.45));
-  // 1 % NOT met (1.15 % at eps_p = 0.03; see check_sister_deck): printed, not asserted.
+  // The same law along the loading path (integrate_loading_path: the plastic rate rises to 4000 /s).
+  const double path = check_against_path(
+      "A4 MTS", ep_q,
+      [&](double, double rate, double T, double se, double, double) {
+        const double mu = mu_of(T);
+        const double x = kb3 * T / (g0e * mu) * std::log(edot0e / rate);  // >= 1: S_e = 0
+        const double Se = std::pow(std::max(0.0, 1.0 - std::pow(std::max(0.0, x), 1.0 / qe)), 1.0 / pe);
+        return sigma_a + Se * se * mu / mu0;
+      },
+      [&](double rate, double T, double se) {
+        const double mu = mu_of(T);
+        const double r = rate;
+        const double theta0 = a0 + a1 * std::log(r) + a2 * std::sqrt(r) - a3 * T;
+        const double ses = sigma_es0 * std::exp(kb3 * T / (g0es * mu) * std::log(r / edot_es0));
+        const double F = std::tanh(alpha * se / ses) / std::tanh(alpha);
+        return theta0 * (1 - F) + thetaIV * F;
+      },
+      [&](double T, double, double) { return mu_of(T); }, strain);
+  // Asserted on the run's own time steps (1.4e-4). At h -> 0 the curve differs by 1.11 % at eps_p = 0.038:
+  // the deck's time step (1.1e-6 s, 0.0044 strain per step) through the elastic-plastic transition, in
+  // MTS's rate-dependent sigma_e growth; NOT within 1 % (printed, not asserted).
+  EXPECT_LT(path, 0.01);
+  // Constant-rate uniaxial reference: 1.15 % at eps_p = 0.03, printed, not asserted (check_sister_deck).
   std::printf("A4 MTS: %d checks, max |q/sigma_y(MTS) - 1| = %.3e, final eps_p %.4f, sigma_e %.4e Pa\n", checks,
               worst, last_ep, prev_se);
   EXPECT_GT(checks, 100);
@@ -335,12 +515,20 @@ struct SisterState {
 // eps ~ 0.48) at eps_p_dot = 4000 /s within 2 %. Then the stress-plastic-strain curve
 // against the offline integration of the same law with adiabatic heating
 // (integrate_adiabatic: the run's own temperature is not used): within 1 % from eps_p = 0.01.
-// NOT met for SCG, PTW (and MTS, above): measured 2.36 %, 1.81 %, 1.15 %, the worst at
-// eps_p = 0.011-0.03, where the run's eps_p_dot still rises to 4000 /s while the offline
-// integration holds 4000 /s (suspected, not verified): for those the figure is printed and
-// `offline_within_1pct` is false (docs/FEATURES.md says so); ZA and JC are asserted.
-template <class Law>
-void check_sister_deck(const std::string& name, Law&& law, bool offline_within_1pct) {
+// That constant-rate uniaxial-stress reference is NOT met for SCG, PTW (and MTS, above): 2.36 %,
+// 1.81 %, 1.15 % at eps_p = 0.011-0.03 (printed; `offline_within_1pct` false). Measured cause
+// (session 14): not a rate still rising to 4000 /s: the particle's lateral inertia. The
+// one-particle specimen starts in uniaxial strain and its lateral contraction rings: the
+// equivalent deviatoric strain rate (2/3) d(ln F_zz - ln F_xx)/dt is 2661, 3617, 4363, 4572,
+// 4478, 4310 /s over the first steps (uniaxial stress: 4000), the plastic rate overshoots to
+// ~4300 /s at eps_p = 0.01, and the volume J (hence p and rho in SCG's mu(p, eta) and PTW's
+// mu(rho), xi_dot(rho)) rings with it. SCG's thermal stress is at its drag limit at 4000 /s
+// (d sigma_t/d eps_p_dot = C_2 = 1.2e4 Pa s: 1 % of q per ~100 /s) and PTW's rate term is
+// close behind, so these two feel it most. The reference that the asserted 1 % uses is
+// integrate_loading_path driven by the run's own e_eq(t) and J(t) (kinematics only; the
+// stress, eps_p, T are integrated offline), at h -> 0 and on the run's own time steps.
+template <class Law, class Shear>
+void check_sister_deck(const std::string& name, Law&& law, Shear&& shear, bool offline_within_1pct) {
   double last_ep = 0, last_rate = 0;
   int checks = 0;
   const std::string xml = sister_deck_text(name);
@@ -348,10 +536,12 @@ void check_sister_deck(const std::string& name, Law&& law, bool offline_within_1
   auto deck = load_deck_from_string(xml, name, test::source_dir() + "/inputs/mpm");
   std::vector<std::pair<double, double>> ep_q;
   double worst = 0, p_prev = 0, width = 0;
+  StrainHistory strain;
   run_loaded_deck(std::move(deck), 1.2e-4, [&](double t, double dt, const MpmComponent& c) {
     const MpmMaterial& mat = c.materials()[1];
     const Particles& p = mat.particles;
     const double ep = p.history[0][0], rate = p.history[1][0];
+    strain.record(t, p.F[0]);
     const double p_start = p_prev;
     p_prev = -p.stress[0].trace() / 3.0;
     if (t <= 0 || ep < 0.01 || !(rate > 0)) return;
@@ -363,6 +553,9 @@ void check_sister_deck(const std::string& name, Law&& law, bool offline_within_1
     worst = std::max(worst, q < lo ? (lo - q) / q : (q > hi ? (q - hi) / q : 0.0));
     width = std::max(width, (hi - lo) / q);
     ep_q.emplace_back(ep, q);
+    if (ep_q.size() == 1 || (ep >= 0.03 && ep_q[ep_q.size() - 2].first < 0.03))
+      std::printf("%s: run at eps_p = %.4f: eps_p_dot %.0f /s, T %.2f K, q %.4e Pa\n", name.c_str(), ep, rate,
+                  p.temperature[0], q);
     last_ep = ep;
     last_rate = rate;
     ++checks;
@@ -374,6 +567,13 @@ void check_sister_deck(const std::string& name, Law&& law, bool offline_within_1
   std::printf("%s: stress-plastic strain curve vs offline adiabatic integration: max |q/sigma_offline - 1| = %.3e "
               "(sigma_offline(0.45) = %.4e Pa)\n", name.c_str(), off, offline.at(0.45));
   if (offline_within_1pct) EXPECT_LT(off, 0.01);
+  double path_continuous = 0;
+  const double path = check_against_path(
+      name, ep_q, [&](double ep, double rate, double T, double, double p_bar, double rho) {
+        return law(SisterState{ep, rate, T, p_bar, rho});
+      }, [](double, double, double) { return 0.0; }, shear, strain, &path_continuous);
+  EXPECT_LT(path, 0.01);             // on the run's own time steps
+  EXPECT_LT(path_continuous, 0.01);  // h -> 0 (5e-9, 2.5e-9 s): also the run's time-step error within 1 %
   std::printf("%s: %d checks, max excursion of q outside [law(T_p), law(T_p - heating dt)] %.3e, widest bracket "
               "(hi - lo)/q %.2e, final eps_p %.4f, eps_p_dot %.1f /s\n",
               name.c_str(), checks, worst, width, last_ep, last_rate);
@@ -390,7 +590,7 @@ TEST(MetalDecks, A4ZaSisterDeckFollowsTheZerilliArmstrongLaw) {
   auto za = [](const SisterState& s) {
     return 46.5e6 + 5.0e6 * 3.7 + 890e6 * std::sqrt(s.ep) * std::exp(-(0.0028 - 0.000115 * std::log(s.rate)) * s.T);
   };
-  check_sister_deck("adiCuZA4000s696K.ups", za, true);
+  check_sister_deck("adiCuZA4000s696K.ups", za, [](double, double, double) { return 46.0e9; }, true);  // constant_shear
 }
 
 // SCG (VT 10.4-10.7) with the deck's constants and scg_shear (VT 7.6):
@@ -416,7 +616,10 @@ TEST(MetalDecks, A4ScgSisterDeckFollowsTheSteinbergCochranGuinanLaw) {
     const double sigma_t = 0.5 * (lo + hi);
     return (std::min(0.125e9 * std::pow(1 + 36 * s.ep, 0.45), 0.64e9) + sigma_t) * mu / mu0;
   };
-  check_sister_deck("adiCuSCG4000s696K.ups", scg, false);  // 2.36 %: see check_sister_deck
+  auto scg_shear = [](double T, double p_bar, double rho) {
+    return 47.7e9 * (1 + 28.0e-12 * p_bar / std::cbrt(rho / 8930.0) - 0.92e-3 * (T - 300.0));
+  };
+  check_sister_deck("adiCuSCG4000s696K.ups", scg, scg_shear, false);  // const-rate 2.36 %; path 0.91 %
 }
 
 // PTW (VT 10.24-10.28, psi = eps_p: inventory erratum) with the deck's constants:
@@ -452,7 +655,16 @@ TEST(MetalDecks, A4PtwSisterDeckFollowsThePrestonTonksWallaceLaw) {
     const double a = (s0 - ty) / d, b = (ts - ty) / a, phi = std::exp(b) - 1;
     return 2 * mu * (ts + a * std::log(1 - phi * std::exp(-b - theta * s.ep / (a * phi))));
   };
-  check_sister_deck("adiCuPTW4000s696K.ups", ptw, false);  // 1.81 %: see check_sister_deck
+  auto np_shear = [&](double T, double p_bar, double rho) {
+    PlasticState st;
+    st.temperature = T;
+    st.density0 = 8930.0;
+    st.density = rho;
+    st.pressure = p_bar;
+    st.melt_temperature = model.melt_->melt_temperature(st);
+    return model.shear_->shear_modulus(st);
+  };
+  check_sister_deck("adiCuPTW4000s696K.ups", ptw, np_shear, false);  // const-rate 1.81 %; path 0.40 %
 }
 
 // A sister deck through the executable, to its end (3e-4 s): exit 0, no NaN (one test per deck:
