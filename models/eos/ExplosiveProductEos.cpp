@@ -8,24 +8,19 @@
 
 #include "models/eos/DensitySolve.h"
 #include "models/eos/EosModels.h"
+#include "models/eos/JwlLaw.h"
 #include "models/eos/PointEos.h"
 
 namespace tephra {
 
 namespace {
 
-// JWL, V = rho0/rho (relative volume), cv = the material's specific heat:
-//   p = A exp(-R1 V) + B exp(-R2 V) + om cv T rho
-//   dp/drho|_T = (R1 V P1 + R2 V P2)/rho + om cv T     (dV/drho = -V/rho)
-//   dp/dT|_rho = om cv rho   => dp/de = om rho
+// JWL (models/eos/JwlLaw.h), cv = the material's specific heat.
 // rho(p, T): bracketed Newton from [0, 1.001 p/(om cv T)] upwards (Uintah's
 // starting bracket; p(0) = 0 < p).
 struct Jwl {
   double A, B, R1, R2, om, rho0, cv;
-  PointThermo point(double rho, double T) const {
-    const double V = rho0 / rho, P1 = A * std::exp(-R1 * V), P2 = B * std::exp(-R2 * V);
-    return {P1 + P2 + om * cv * T * rho, (R1 * V * P1 + R2 * V * P2) / rho + om * cv * T, om * cv * rho};
-  }
+  PointThermo point(double rho, double T) const { return jwl_point(A, B, R1, R2, om, rho0, cv, rho, T); }
   double density(double p, double T) const {
     return solve_density_bracketed(
         [&](double r) {

@@ -2,17 +2,20 @@
 
 #include <cmath>
 #include <sstream>
+#include <utility>
 
 #include "core/base/Errors.h"
+#include "models/eos/DensitySolve.h"
+#include "models/eos/JwlLaw.h"
 
 namespace tephra {
 
+// The law of models/eos/JwlLaw.h with cv = Cv/rho0 (Cv is per unit volume).
 SolidEosPoint ViscoScramJwl::jwl(double rho, double rho0, double T) const {
-  const double V = rho0 / rho;
-  const double P1 = A * std::exp(-R1 * V), P2 = B * std::exp(-R2 * V), P3 = om * Cv * T / V;
+  const PointThermo t = jwl_point(A, B, R1, R2, om, rho0, Cv / rho0, rho, T);
   SolidEosPoint e;
-  e.pressure = P1 + P2 + P3;
-  e.dp_drho = (R1 * rho0 * P1 + R2 * rho0 * P2) / (rho * rho) + om * Cv * T / rho0;
+  e.pressure = t.p;
+  e.dp_drho = t.dp_drho;
   e.c2 = e.dp_drho;
   return e;
 }
@@ -39,20 +42,16 @@ double ViscoScramJwl::jwl_density(double p, double rho0, double T) const {
     if (i > 2300) fail("p(rho) stays above it in expansion");
     lo *= lo > 0.01 * rho0 ? 0.98 : 0.5;
   }
-  // Newton from the upper end, bisection whenever a step leaves the bracket;
-  // stops when the step or the bracket is below 1e-15 of rho.
-  double x = hi;
-  for (int i = 0; i < 500; ++i) {
-    const SolidEosPoint e = jwl(x, rho0, T);
-    double x1 = e.dp_drho > 0 ? x - (e.pressure - p) / e.dp_drho : 0.5 * (lo + hi);
-    if (!(x1 > lo && x1 < hi)) x1 = 0.5 * (lo + hi);
-    const double f1 = f(x1);
-    if (f1 == 0) return x1;
-    (f1 < 0 ? lo : hi) = x1;
-    if (std::abs(x1 - x) <= 1e-15 * x1 || hi - lo <= 1e-15 * hi) return x1;
-    x = x1;
-  }
-  fail("bracketed solve did not converge");
+  if (f(lo) == 0) return lo;
+  // The project's safeguarded Newton (models/eos/DensitySolve.h) inside the bracket.
+  const double rho = solve_density_bracketed(
+      [&](double r) {
+        const SolidEosPoint e = jwl(r, rho0, T);
+        return std::pair{e.pressure - p, e.dp_drho};
+      },
+      lo, hi, hi, 1e-15);
+  if (!std::isfinite(rho)) fail("bracketed solve did not converge");
+  return rho;
 }
 
 SolidEosPoint ViscoScramJwl::pressure(double rho, double rho0, double T, double p_ref) const {

@@ -6,6 +6,7 @@
 //
 //   p(rho, T) = A e^{-R1 V} + B e^{-R2 V} + om Cv T / V,     V = rho0/rho
 //   dp/drho   = (R1 rho0 P1 + R2 rho0 P2)/rho^2 + om Cv T/rho0,   c^2 = dp/drho
+// (the law of models/eos/JwlLaw.h with cv = Cv/rho0)
 // (P1, P2 the A and B terms). p is the ABSOLUTE pressure (no p_ref added);
 // Cv is per unit volume [J/(m^3 K)] (the decks give rho0 c_v: BurnRate.ups
 // 2.780236e6 = 1832 x 1517.6), om the Gruneisen coefficient.
@@ -22,7 +23,7 @@
 // up to three roots. Tephra returns the largest one, the root on the
 // compression branch through rho0 (p increases with rho above the dip):
 // bracketed by scanning down from rho0 (first sign change from above), then
-// Newton safeguarded by bisection to 1e-15 relative. Departure: Vaango's
+// the safeguarded Newton of models/eos/DensitySolve.h to 1e-15 relative. Departure: Vaango's
 // Newton-bisection starts from the cell's previous density and returns
 // whichever root it reaches.
 #include "models/solid/ConstitutiveModel.h"
