@@ -41,27 +41,24 @@ inline void p2g_particle(const Particles& p, const V& s, const Vec3& body_force,
   Vec3* mom = g.velocity.data();
   Vec3* fext = g.external_force.data();
   Mat3* stress = g.stress.data();
+  auto add = [&](std::size_t gi, double wk) {
+    mass[gi] += mp * wk;
+    volume[gi] += vp * wk;
+    mom[gi] += momentum * wk;
+    fext[gi] += force * wk;
+    if constexpr (Stress) stress[gi] += vol_stress * wk;
+  };
   if constexpr (Force) {
     // sigma - q I: the artificial bulk viscosity acts in the force only.
-    const Mat3 force_stress = p.volume[i] * (p.stress[i] - p.q[i] * Mat3::Identity());
+    const Mat3 force_stress = vp * (p.stress[i] - p.q[i] * Mat3::Identity());
     Vec3* fint = g.internal_force.data();
     // entries() gives S_gp with the same product as weights() (AxisStencils.h).
     s.entries(i, [&](std::size_t gi, double wk, const Vec3& gr) {
-      mass[gi] += mp * wk;
-      volume[gi] += vp * wk;
-      mom[gi] += momentum * wk;
-      fext[gi] += force * wk;
-      if constexpr (Stress) stress[gi] += vol_stress * wk;
+      add(gi, wk);
       fint[gi] -= force_stress * gr;
     });
   } else {
-    s.weights(i, [&](std::size_t gi, double wk) {
-      mass[gi] += mp * wk;
-      volume[gi] += vp * wk;
-      mom[gi] += momentum * wk;
-      fext[gi] += force * wk;
-      if constexpr (Stress) stress[gi] += vol_stress * wk;
-    });
+    s.weights(i, add);
   }
 }
 
