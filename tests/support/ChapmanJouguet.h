@@ -7,7 +7,7 @@
 // The CJ point is where the Rayleigh line touches p(V):
 //   rho0 D^2 = -p'(V),  p(V) - p0 = -p'(V) (1 - V),
 // one equation in V, solved by bisection on [0.3, 0.99]; D_CJ = sqrt(-p'(V)/rho0).
-// (The same derivation as tests/verification/test_ice_reactions.cpp and
+// (Used by tests/verification/test_ice_reactions.cpp and test_mpmice_jwlpp.cpp; the same derivation as
 // tests/bench/jwlc_cj.py: ANFO JWLEOSANFO.xml gives V_CJ = 0.748,
 // p_CJ = 10.17 GPa, D_CJ = 5899.3 m/s.)
 namespace tephra::test {

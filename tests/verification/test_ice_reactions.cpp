@@ -23,36 +23,17 @@
 #include "core/base/Errors.h"
 #include "core/grid/Loop.h"
 #include "core/io/StateArchive.h"
+#include "tests/support/ChapmanJouguet.h"
 #include "tests/support/IceRuns.h"
 #include "tests/support/TestPaths.h"
 
 namespace tephra {
 namespace {
 
-struct Jwlc {
-  double A, B, C, R1, R2, om, rho0;
-  double p(double V) const { return A * std::exp(-R1 * V) + B * std::exp(-R2 * V) + C * std::pow(V, -(1 + om)); }
-  double dp(double V) const {
-    return -R1 * A * std::exp(-R1 * V) - R2 * B * std::exp(-R2 * V) - (1 + om) * C * std::pow(V, -(2 + om));
-  }
-};
-
-struct CjState {
-  double V, p, D;
-};
-
-CjState chapman_jouguet(const Jwlc& e, double p0) {
-  auto f = [&](double V) { return e.p(V) - p0 + e.dp(V) * (1 - V); };
-  double a = 0.3, b = 0.99;
-  EXPECT_LT(f(a), 0.0);
-  EXPECT_GT(f(b), 0.0);
-  for (int i = 0; i < 200; ++i) {
-    const double m = 0.5 * (a + b);
-    (f(m) < 0 ? a : b) = m;
-  }
-  const double V = 0.5 * (a + b);
-  return {V, e.p(V), std::sqrt(-e.dp(V) / e.rho0)};
-}
+// The CJ state of tests/support/ChapmanJouguet (the derivation above).
+using Jwlc = test::JwlcProducts;
+using test::chapman_jouguet;
+using test::CjState;
 
 // The JWLC constants of an EOSData include, read back from the deck.
 Jwlc jwlc_of(const DeckNode& eos) {
