@@ -1,10 +1,11 @@
 #pragma once
 // The MPMICE burn models of <Models> (mpmice/SolidBurn.h): Simple_Burn,
-// Steady_Burn. read_ice_setup takes them through these factories; the
+// Steady_Burn, Unsteady_Burn, DDT1. read_ice_setup takes them through these factories; the
 // MpmIceComponent attaches itself to them (SolidBurnModel::attach).
 #include <cstddef>
 
 #include "ice/models/IceModel.h"
+#include "mpmice/SteadyBurn.h"
 
 namespace tephra {
 
@@ -17,5 +18,13 @@ IceModelFactories mpmice_burn_model_factories();
 // material, <toMaterial> (index p) an ICE one; `what` names the model.
 void check_reactant_product(const ModelParams& mp, const IceSetup& setup, std::size_t r, std::size_t p,
                             const char* what);
+
+struct WsbIgnition;
+
+// The WSB constants every WSB burn model reads (<IdealGasConst> ...
+// <MoleWeightGasPh>; SteadyBurnModel.cpp) and the ignition parameters
+// (<BoundaryParticles>, <IgnitionTemp>; mpmice/WsbSurfaceCell.h).
+WsbParams read_wsb_params(ModelParams& mp);
+WsbIgnition read_wsb_ignition(ModelParams& mp);
 
 }  // namespace tephra

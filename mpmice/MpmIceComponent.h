@@ -55,6 +55,7 @@ class MpmIceComponent final : public Component, private MpmCoupling, private Sol
   void corner_masses(std::size_t s, const IntVec3& c, double wm[8]) const override;
   void burn_particles(std::size_t s, const CellScalars& dm, BurnedCells& out) override;
   void particles_per_cell(std::size_t s, CellScalars& out) const override;
+  bool particle_history_max(std::size_t s, const std::string& name, CellScalars& out) const override;
 
   std::unique_ptr<MpmComponent> mpm_;
   std::unique_ptr<IceComponent> ice_;

@@ -25,7 +25,7 @@ namespace {
 // material's cell copy would never reach the particles (the cell state of a
 // solid is re-projected from the particles every step), so an MPM reactant
 // of an ICE model is a MissingFeature naming the model and the material.
-void check_models_in_mpmice(const DeckNode& root, const IceSetup& s) {
+void check_models_in_mpmice(const DeckNode& root, const IceSetup& s, const MpmSetup& ms) {
   // s.models holds <CFD><ICE><ADD_HEAT> first (when present), then the
   // <Model> elements in deck order (parse_ice_models).
   std::vector<const DeckNode*> model_nodes;
@@ -33,16 +33,27 @@ void check_models_in_mpmice(const DeckNode& root, const IceSetup& s) {
   const std::size_t offset = s.models.size() - model_nodes.size();
   for (std::size_t i = 0; i < s.models.size(); ++i) {
     const IceModel& m = *s.models[i];
-    if (dynamic_cast<const SolidBurnModel*>(&m)) continue;
     const DeckNode& where = i >= offset ? *model_nodes[i - offset]
                                         : root.require_child("CFD").require_child("ICE").require_child("ADD_HEAT");
+    if (const auto* burn = dynamic_cast<const SolidBurnModel*>(&m)) {
+      // A particle variable the burn model reads (DDT1's crack model: visco_scram's crackRad).
+      if (const std::string h = burn->required_particle_history(); !h.empty()) {
+        bool has = false;
+        for (const HistoryVariable& v : ms.materials[burn->reactant()].model->history())
+          has = has || (v.name == h && v.components == 1);
+        if (!has)
+          where.fail("<Model type=\"" + m.type() + "\"> needs the particle variable p." + h + " of its reactant '" +
+                     s.materials[burn->reactant()].name + "' (a visco_scram constitutive model)");
+      }
+      continue;
+    }
     const auto* sm = dynamic_cast<const SourceMaterials*>(&m);
     if (!sm) where.missing_feature("<Model type=\"" + m.type() + "\"> in MPMICE");
     for (std::size_t r : sm->source_materials())
       if (s.materials[r].lagrangian)
         where.missing_feature("<Model type=\"" + m.type() + "\"> with the MPM material '" + s.materials[r].name +
                               "' in MPMICE (ICE models convert between ICE materials only; an MPM reactant "
-                              "needs a burn model: Simple_Burn, Steady_Burn)");
+                              "needs a burn model: Simple_Burn, Steady_Burn, Unsteady_Burn, DDT1)");
   }
 }
 
@@ -93,7 +104,7 @@ std::unique_ptr<MpmIceComponent> make_mpmice_component(const Deck& deck) {
     root.require_child("CFD").require_child("ICE").missing_feature(
         "<ImplicitSolver> in MPMICE (explicit pressure only so far; the coupled implicit solve was tried: its outer "
         "iterations stall with moving solids, docs/mpmice.md)");
-  check_models_in_mpmice(root, s);
+  check_models_in_mpmice(root, s, ms);
   if (s.lodi.enabled) root.require_child("Grid").missing_feature("LODI boundary conditions in MPMICE");
   auto ice = std::make_unique<IceComponent>(std::move(s));
   return std::make_unique<MpmIceComponent>(std::move(mpm), std::move(ice), p_ref);

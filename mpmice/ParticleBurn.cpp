@@ -62,6 +62,24 @@ void MpmIceComponent::particles_per_cell(std::size_t s, CellScalars& out) const 
   }
 }
 
+bool MpmIceComponent::particle_history_max(std::size_t s, const std::string& name, CellScalars& out) const {
+  const MpmMaterial& mm = mpm_->materials()[s];
+  const std::vector<HistoryVariable> h = mm.model->history();
+  std::size_t k = h.size();
+  for (std::size_t i = 0; i < h.size(); ++i)
+    if (h[i].name == name && h[i].components == 1) k = i;
+  if (k == h.size() || k >= mm.particles.history.size()) return false;
+  const Grid& g = ice_->grid();
+  const std::vector<double>& col = mm.particles.history[k];
+  out.fill(0.0);
+  for (std::size_t p = 0; p < mm.particles.size(); ++p) {
+    IntVec3 c;
+    for (int d = 0; d < 3; ++d) c[d] = int(std::floor((mm.particles.x[p][d] - g.lower[d]) / g.dx[d]));
+    if (const int pi = g.patch_owning_cell(c); pi >= 0) out[std::size_t(pi)](c) = std::max(out[std::size_t(pi)](c), col[p]);
+  }
+  return true;
+}
+
 void MpmIceComponent::burn_particles(std::size_t s, const CellScalars& dm, BurnedCells& out) {
   const Grid& g = ice_->grid();
   MpmMaterial& mm = mpm_->materials()[s];

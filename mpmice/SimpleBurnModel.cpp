@@ -54,12 +54,16 @@ void check_reactant_product(const ModelParams& mp, const IceSetup& setup, std::s
     mp.node().require_child("toMaterial").fail(std::string(what) + ": <toMaterial> must be an ICE material");
 }
 
-IceModelP make_steady_burn(const DeckNode& model, const IceSetup& setup);  // SteadyBurnModel.cpp
+IceModelP make_steady_burn(const DeckNode& model, const IceSetup& setup);    // SteadyBurnModel.cpp
+IceModelP make_unsteady_burn(const DeckNode& model, const IceSetup& setup);  // UnsteadyBurnModel.cpp
+IceModelP make_ddt1(const DeckNode& model, const IceSetup& setup);           // Ddt1Model.cpp
 
 IceModelFactories mpmice_burn_model_factories() {
   IceModelFactories f;
   f["Simple_Burn"] = make_simple_burn;
   f["Steady_Burn"] = make_steady_burn;
+  f["Unsteady_Burn"] = make_unsteady_burn;
+  f["DDT1"] = make_ddt1;
   return f;
 }
 

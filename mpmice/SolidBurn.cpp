@@ -67,7 +67,7 @@ void SolidBurnModel::compute_sources(const IceModelInput& in, IceModelSources& o
       cell.solid_mass = solid.rho_CC[pi](c) * V;
       cell.particles = ppc_[pi](c);
       if (!select_cell(wm, cell)) return;
-      cell.area = simple_burn_surface_area(simple_burn_surface_normal(wm, dx), dx);
+      cell.area = cell.surface ? simple_burn_surface_area(simple_burn_surface_normal(wm, dx), dx) : 0.0;
       on_surface_[pi](c) = cell.area;
       dm_[pi](c) = std::clamp(burn_mass(cell), 0.0, cell.solid_mass);
     });
@@ -81,18 +81,19 @@ void SolidBurnModel::compute_sources(const IceModelInput& in, IceModelSources& o
       if (!(dm > 0)) return;
       const Vec3 P = burned_.momentum[pi](c);
       const double E = burned_.energy[pi](c), dv = dm * solid.sp_vol_CC[pi](c);
+      const double heat = dm * heat_of_reaction(pi, c);
       out.mass[reactant_][pi](c) -= dm;
       out.mass[product_][pi](c) += dm;
       out.momentum[reactant_][pi](c) -= P;
       out.momentum[product_][pi](c) += P;
       out.energy[reactant_][pi](c) -= E;
-      out.energy[product_][pi](c) += E + dm * enthalpy_;
+      out.energy[product_][pi](c) += E + heat;
       out.sp_vol[reactant_][pi](c) -= dv;
       out.sp_vol[product_][pi](c) += dv;
       burning_[pi](c) = 1.0;
       total_burned_ += dm;
       total_momentum_ += P;
-      total_heat_ += dm * enthalpy_;
+      total_heat_ += heat;
     });
 }
 

@@ -37,6 +37,11 @@ class SolidBurnSupport {
   virtual void burn_particles(std::size_t s, const CellScalars& dm, BurnedCells& out) = 0;
   // The number of solid s's particles in each interior cell (Uintah's numPPC).
   virtual void particles_per_cell(std::size_t s, CellScalars& out) const = 0;
+  // The largest value of solid s's scalar particle history column `name`
+  // (ConstitutiveModel::history(), e.g. visco_scram's crackRad) over the
+  // particles of each interior cell, 0 where the cell has none. False (out
+  // untouched) when the solid's model has no such scalar column.
+  virtual bool particle_history_max(std::size_t s, const std::string& name, CellScalars& out) const = 0;
 };
 
 // The cell a burn law sees.
@@ -49,6 +54,7 @@ struct BurnCell {
   double pressure = 0;     // the law's pressure (Simple_Burn: press_equil_CC)
   double solid_mass = 0;   // the solid's cell mass rho_CC V
   double particles = 0;    // the solid's particles in the cell
+  bool surface = true;     // select_cell may clear it: the law needs no burning area (DDT1's detonation), area = 0
 };
 
 // The common part of the burn models: surface cells, the particle side,
@@ -76,12 +82,22 @@ class SolidBurnModel : public IceModel {
   // The solid's particle count in cell c of patch pi (extra cells: 0).
   double particles_in(std::size_t pi, const IntVec3& c) const { return ppc_[pi](c); }
   std::size_t product() const { return product_; }
+  // A scalar particle history column the model reads from its reactant
+  // (DDT1's crack model: "crackRad"), "" if none; checked when the MPMICE
+  // deck is read (mpmice/MpmIceDeck.cpp).
+  virtual std::string required_particle_history() const { return ""; }
+  const CellScalars& on_surface() const { return on_surface_; }       // burning area per cell of the last step
+  const CellScalars& particles_per_cell_field() const { return ppc_; }  // reactant particles per cell of the last step
   double mass_burned_last_step() const { return total_burned_; }        // sum_c dm_c of the last step
   const Vec3& momentum_burned_last_step() const { return total_momentum_; }  // sum_c P_c (to the product)
 
  protected:
   // The mass the law burns in cell `cell` over dt (before the particle cap).
   virtual double burn_mass(const BurnCell& cell) = 0;
+  // The heat released per unit burned mass in interior cell c of patch pi
+  // (default: the model's enthalpy; DDT1 differs between its branches).
+  virtual double heat_of_reaction(std::size_t /*pi*/, const IntVec3& /*c*/) const { return enthalpy_; }
+  SolidBurnSupport& support() const { return *support_; }
 
  private:
   std::string type_, prefix_;

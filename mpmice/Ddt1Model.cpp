@@ -1,0 +1,193 @@
+// <Model type="DDT1"> in MPMICE (mpmice/SolidBurn.h): the branch of each
+// cell and its burned mass from mpmice/Ddt1.h (JWL++ detonation above
+// <ThresholdPressureJWL>, WSB surface burning and, with <useCrackModel>,
+// crack burning between <ThresholdPressureSB> and it), taken from the
+// particles by the common burn machinery (ParticleBurn.cpp), so the
+// particles lose exactly what the product gains in both branches.
+//
+// Saved fields (Vaango's labels, reactant material): F, delF (detonating
+// cells), detonating (1/0), detLocalTo (1 where a neighbour detonates),
+// burning and BurningCriteria (Vaango's codes: 2 conductive, 3 convective),
+// onSurface (burning area), surfaceTemp (WSB Ts), crackedEnough,
+// SteadyBurn.numPPC; sums totalMassBurned, totalHeatReleased.
+// Not implemented (MissingFeature, exit 3): <useInductionTime> true (Son's
+// flame-spread induction time), <burnMaterial> other than <toMaterial>,
+// <adjust_IO_intervals>. <rho0> (present in BurnRate.ups) is accepted and
+// unused, as in Vaango (the 20 % cap uses the MPM material's density).
+// Departures from Vaango: the conductive cap uses the solid's cell mass
+// (Vaango compares with rho_r theta_r V, which is not the cell's mass); the
+// energy leaving with the burned mass is the particles' c_v T (as for the
+// other burn models, docs/mpmice.md).
+#include <algorithm>
+#include <stdexcept>
+
+#include "core/deck/DeckNode.h"
+#include "core/grid/Loop.h"
+#include "ice/IceSetup.h"
+#include "ice/models/ModelSupport.h"
+#include "mpmice/BurnModels.h"
+#include "mpmice/Ddt1.h"
+#include "mpmice/SolidBurn.h"
+#include "mpmice/SteadyBurn.h"
+#include "mpmice/WsbSurfaceCell.h"
+
+namespace tephra {
+
+namespace {
+
+struct Ddt1Params {
+  WsbParams wsb;
+  WsbIgnition ignition;
+  Ddt1Thresholds thresholds;
+  double G = 0, b = 0, E0 = 0;  // JWL++ rate constant [1/(s Pa^b)], exponent, heat of detonation [J/kg]
+  double rho0 = 0;              // the MPM reactant's density [kg/m^3]
+};
+
+class Ddt1Model final : public SolidBurnModel {
+ public:
+  Ddt1Model(const Ddt1Params& prm, std::size_t reactant, std::size_t product)
+      : SolidBurnModel("DDT1", "DDT1", reactant, product, prm.wsb.Qc + prm.wsb.Qg, prm.ignition.ignition_temp),
+        prm_(prm) {}
+
+  std::string required_particle_history() const override { return prm_.thresholds.crack_model ? "crackRad" : ""; }
+
+  void initialize(const Grid& grid, const std::vector<IceMaterialFields>& mats) override {
+    SolidBurnModel::initialize(grid, mats);
+    for (CellScalars* f : {&F_, &delF_, &detonating_, &det_local_, &branch_, &ts_, &cracked_, &crack_, &burning_code_})
+      *f = CellScalars(grid, 0);
+  }
+
+  void compute_sources(const IceModelInput& in, IceModelSources& out) override {
+    for (CellScalars* f : {&F_, &delF_, &detonating_, &det_local_, &branch_, &ts_, &cracked_}) f->fill(0.0);
+    if (prm_.thresholds.crack_model) {
+      crack_.fill(0.0);
+      if (!support().particle_history_max(reactant(), "crackRad", crack_))
+        throw std::logic_error("DDT1: the reactant has no crackRad (checked when the deck is read)");
+    }
+    SolidBurnModel::compute_sources(in, out);
+    // "burning": Vaango's code of the surface-burning cells (2 conductive, 3 convective).
+    burning_code_.fill(0.0);
+    for (std::size_t pi = 0; pi < in.grid.patches.size(); ++pi)
+      for_each_cell_serial(in.grid.patches[pi].cells(), [&](int i, int j, int k) {
+        const double b = branch_[pi](i, j, k);
+        if (b == double(int(Ddt1Branch::Conductive)) || b == double(int(Ddt1Branch::Convective)))
+          burning_code_[pi](i, j, k) = b;
+      });
+  }
+
+  bool select_cell(const double wm[8], BurnCell& cell) const override {
+    const IceModelInput& in = *cell.in;
+    const std::size_t pi = cell.patch;
+    const IntVec3& c = cell.c;
+    const WsbSurface s = wsb_surface_cell(*this, prm_.ignition, wm, cell);
+    Ddt1CellState st;
+    st.p = in.press_equil_CC[pi](c);
+    st.reactant_fraction = in.mats[reactant()].vol_frac_CC[pi](c);
+    for (int k = -1; k <= 1; ++k)
+      for (int j = -1; j <= 1; ++j)
+        for (int i = -1; i <= 1; ++i)
+          if (in.press_equil_CC[pi](c + IntVec3(i, j, k)) > prm_.thresholds.jwl_pressure) st.detonation_next = true;
+    st.ignited_surface = s.ignited;
+    st.gas_pressure = s.pressure;
+    st.hot_neighbour = s.hot_neighbour;
+    if (prm_.thresholds.crack_model) st.cracked = crack_[pi](c) > ddt1_crack_threshold(st.p);
+    const Ddt1Branch br = ddt1_branch(prm_.thresholds, st);
+    if (st.reactant_fraction > 1e-10 && st.p < prm_.thresholds.jwl_pressure && st.p > prm_.thresholds.sb_pressure)
+      det_local_[pi](c) = st.detonation_next ? 1.0 : 0.0;
+    cracked_[pi](c) = st.cracked ? 1.0 : 0.0;
+    branch_[pi](c) = double(int(br));
+    cell.temperature = s.T0;
+    cell.pressure = br == Ddt1Branch::Detonating ? st.p : s.pressure;
+    cell.surface = br == Ddt1Branch::Conductive;  // the others need no corner-mass area
+    return br != Ddt1Branch::None;
+  }
+
+  std::set<std::string> labels() const override {
+    return {"totalMassBurned", "totalHeatReleased", "F",           "delF",          "detonating",
+            "detLocalTo",      "burning",           "BurningCriteria", "onSurface", "surfaceTemp",
+            "crackedEnough",   "SteadyBurn.numPPC"};
+  }
+
+  std::vector<ModelField> fields() const override {
+    return {{"F", 0, &F_},
+            {"delF", 0, &delF_},
+            {"detonating", 0, &detonating_},
+            {"detLocalTo", 0, &det_local_},
+            {"burning", 0, &burning_code_},
+            {"BurningCriteria", 0, &burning_code_},
+            {"onSurface", 0, &on_surface()},
+            {"surfaceTemp", 0, &ts_},
+            {"crackedEnough", 0, &cracked_},
+            {"SteadyBurn.numPPC", 0, &particles_per_cell_field()}};
+  }
+
+ protected:
+  double burn_mass(const BurnCell& c) override {
+    const IceModelInput& in = *c.in;
+    const std::size_t pi = c.patch;
+    const double V = in.grid.cell_volume();
+    const auto br = Ddt1Branch(int(branch_[pi](c.c)));
+    if (br == Ddt1Branch::Detonating) {
+      const double Mp = in.mats[product()].rho_CC[pi](c.c) * V;
+      const Ddt1Detonation d = ddt1_detonation(prm_.G, prm_.b, c.pressure, c.solid_mass, Mp, prm_.rho0, V, in.dt);
+      F_[pi](c.c) = d.F;
+      delF_[pi](c.c) = d.delF;
+      detonating_[pi](c.c) = 1.0;
+      return d.mass;
+    }
+    const double vs = in.mats[reactant()].sp_vol_CC[pi](c.c);
+    const WsbState w = wsb_burn_rate(prm_.wsb, c.pressure, c.temperature, vs);
+    ts_[pi](c.c) = w.surface_temperature;
+    const double area = br == Ddt1Branch::Conductive ? c.area : ddt1_convective_area(V);
+    return std::min(in.dt * area * w.mass_flux, wsb_burnable_mass(c));
+  }
+
+  double heat_of_reaction(std::size_t pi, const IntVec3& c) const override {
+    return Ddt1Branch(int(branch_[pi](c))) == Ddt1Branch::Detonating ? prm_.E0 : prm_.wsb.Qc + prm_.wsb.Qg;
+  }
+
+ private:
+  Ddt1Params prm_;
+  // Per-cell state of the last step (mutable: select_cell, a const query of
+  // the common machinery, records the branch and the diagnostics it decides).
+  mutable CellScalars F_, delF_, detonating_, det_local_, branch_, ts_, cracked_, crack_;
+  CellScalars burning_code_;
+};
+
+}  // namespace
+
+IceModelP make_ddt1(const DeckNode& model, const IceSetup& setup) {
+  ModelParams mp(model_block(model, "DDT1"), "DDT1");
+  const std::size_t r = mp.material("fromMaterial", setup), p = mp.material("toMaterial", setup);
+  check_reactant_product(mp, setup, r, p, "DDT1");
+  if (const DeckNode* bm = mp.node().child("burnMaterial")) {
+    const std::size_t q = mp.material("burnMaterial", setup);
+    if (q != p) bm->missing_feature("DDT1 <burnMaterial> other than <toMaterial>");
+  }
+  Ddt1Params prm;
+  prm.wsb = read_wsb_params(mp);
+  prm.ignition = read_wsb_ignition(mp);
+  prm.thresholds.jwl_pressure = mp.positive("ThresholdPressureJWL");
+  prm.thresholds.sb_pressure = mp.number("ThresholdPressureSB");
+  prm.thresholds.volume_fraction = mp.number("ThresholdVolFrac", 0.01);
+  prm.G = mp.positive("G");
+  prm.b = mp.number("b");
+  prm.E0 = mp.number("E0");
+  prm.thresholds.crack_model = mp.flag("useCrackModel", false);
+  if (prm.thresholds.crack_model) {
+    mp.positive("Gcrack");  // read, unused (Vaango's crack mass term is commented out)
+    mp.positive("nCrack");
+    mp.number("CrackVolThreshold", 1e-14);
+  }
+  if (mp.flag("useInductionTime", false))
+    mp.node().require_child("useInductionTime").missing_feature("DDT1 <useInductionTime> (flame-spread induction time)");
+  for (const char* unused : {"IgnitionConst", "PressureShift", "PreexpoConst", "ExponentialConst"})
+    if (mp.node().child(unused)) mp.accept(unused);
+  if (const DeckNode* adj = mp.node().child("adjust_IO_intervals")) adj->missing_feature("DDT1 <adjust_IO_intervals>");
+  mp.accept("rho0");  // BurnRate.ups gives it; Vaango's DDT1 does not read it
+  mp.finish();
+  prm.rho0 = setup.materials[r].sources.empty() ? 0.0 : setup.materials[r].sources[0].density;
+  return std::make_shared<Ddt1Model>(prm, r, p);
+}
+
+}  // namespace tephra
