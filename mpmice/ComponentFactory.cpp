@@ -8,6 +8,7 @@
 #include "models/plasticity/SubModelFamilies.h"
 #include "models/solid/ConstitutiveModel.h"
 #include "mpm/MpmComponent.h"
+#include "mpmice/BurnModels.h"
 #include "mpmice/MpmIceComponent.h"
 
 namespace tephra {
@@ -28,7 +29,12 @@ std::vector<std::string> registered_keys(const std::string& family) {
       {"SimulationComponent", [] { return std::vector<std::string>{"mpm", "ice", "mpmice"}; }},
       {"constitutive_model", [] { return constitutive_model_types(); }},
       {"EOS", [] { return equation_of_state_types(); }},
-      {"Model", [] { return ice_model_types(); }},
+      {"Model",
+       [] {  // the ICE models, then the MPMICE burn models (mpmice/BurnModels.h)
+         std::vector<std::string> keys = ice_model_types();
+         for (const auto& [type, factory] : mpmice_burn_model_factories()) keys.push_back(type + " (MPMICE)");
+         return keys;
+       }},
       {"contact", [] { return mpm_contact_types(); }},
       {"interpolator", [] { return mpm_interpolators(); }},
   };
