@@ -21,6 +21,7 @@
 // count, nor on which thread ran which block: the node sums are bit-for-bit
 // the same with 1, 2 or any number of threads. Equivalently, the sums are
 // those of a serial loop over the particles stably sorted by colour.
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -91,16 +92,40 @@ void for_each_scatter_particle(const ScatterOrder& o, std::size_t np, Body&& bod
       for (std::size_t j = 0; j < np; ++j) body(std::size_t(index[j]));
     return;
   }
+  // Thread t takes a contiguous run of each colour's blocks holding about
+  // 1/T of that colour's particles (split at block boundaries). The blocks
+  // are numbered bz-major inside a colour, so a run is a slab in z, and
+  // roughly the same slab in every colour: each thread keeps writing the node
+  // rows it wrote in the previous colour (they stay in its core's cache). A
+  // dynamic schedule handed neighbouring blocks to different threads, so the
+  // node rows shared by the blocks of consecutive colours moved between the
+  // cores at every colour. Which thread runs a block does not change the bits.
 #pragma omp parallel num_threads(threads)
-  for (int c = 0; c < 4; ++c) {
-    const long first = long(o.colour[c]), last = long(o.colour[c + 1]);
-    // The implicit barrier at the end of the loop: colour c is complete before c + 1 starts.
-#pragma omp for schedule(dynamic, 1)
-    for (long b = first; b < last; ++b) {
-      if (in_order)
-        for (std::uint32_t j = block[b]; j < block[b + 1]; ++j) body(std::size_t(j));
-      else
-        for (std::uint32_t j = block[b]; j < block[b + 1]; ++j) body(std::size_t(index[j]));
+  {
+    int t = 0;
+#ifdef _OPENMP
+    t = omp_get_thread_num();
+#endif
+    for (int c = 0; c < 4; ++c) {
+      const std::uint32_t* first = block + o.colour[c];
+      const std::uint32_t* last = block + o.colour[c + 1];
+      const std::size_t p0 = *first, n = std::size_t(*last) - p0;
+      // First block starting at or after the thread's share of the particles.
+      auto run_start = [&](int u) {
+        if (u == 0) return first;
+        if (u == threads) return last;
+        const std::size_t target = p0 + n * std::size_t(u) / std::size_t(threads);
+        return std::lower_bound(first, last, std::uint32_t(target));
+      };
+      const std::uint32_t* b0 = run_start(t);
+      const std::uint32_t* b1 = run_start(t + 1);
+      if (in_order) {
+        for (std::uint32_t j = *b0; j < *b1; ++j) body(std::size_t(j));
+      } else {
+        for (std::uint32_t j = *b0; j < *b1; ++j) body(std::size_t(index[j]));
+      }
+      // Colour c is complete before c + 1 starts.
+#pragma omp barrier
     }
   }
 }
