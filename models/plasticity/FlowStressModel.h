@@ -27,6 +27,11 @@ class FlowStressModel {
   // Models with an evolving internal stress (MTS σ_e, eq. 10.19) give its rate
   // dσ_e/dε_p = θ(σ_e); 0 for the others.
   virtual double internal_stress_rate(const PlasticState&) const { return 0.0; }
+  // σ_e after a plastic increment Δε_p from s.sigma_e (= σ_e,n) at the step's rate and
+  // temperature (s.eps_p_rate, s.temperature held over the increment): the ODE
+  // dσ_e/dε_p = θ(σ_e) integrated over [0, Δε_p] (MTS: RK4 substeps, MtsFlow.cpp), not the
+  // explicit σ_e,n + θ(σ_e,n) Δε_p; s.sigma_e for the laws without an internal stress.
+  virtual double evolve_internal_stress(const PlasticState& s, double /*dep*/) const { return s.sigma_e; }
 };
 
 using FlowStressModelP = std::unique_ptr<FlowStressModel>;

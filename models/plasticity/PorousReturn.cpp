@@ -24,8 +24,8 @@ Eval evaluate(const YieldCondition& y, const FlowStressModel& flow, const Porous
   PlasticState s = in.state;
   s.eps_p = in.state.eps_p + dep;
   s.eps_p_rate = in.dt > 0.0 ? dep / in.dt : 0.0;
-  // MTS (PorousReturn.h): sigma_e = sigma_e,n + theta(sigma_e,n) Delta eps_p; 0 for the other laws.
-  s.sigma_e = in.state.sigma_e + flow.internal_stress_rate(s) * dep;
+  // MTS (PorousReturn.h): sigma_e(Delta eps_p) by eq. 10.19 over the increment; unchanged for the other laws.
+  s.sigma_e = flow.evolve_internal_stress(s, dep);
   const FlowStress fs = flow.evaluate(s);
   const Eigen::Matrix3d sig = stress_of(q, I1, n_hat);
   const double phi = in.state.porosity;

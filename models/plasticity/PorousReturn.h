@@ -16,9 +16,9 @@
 // f_q = (∂f/∂σ : n̂)/sqrt(3/2), f_I1 = tr(∂f/∂σ)/3. Newton on the 4x4 system with a
 // forward-difference Jacobian and backtracking; φ and T are held at their t_n values
 // (porosity and temperature are updated after the return, as VT Algorithm 1 does).
-// A flow law with an internal stress (MTS, FlowStressModel::internal_stress_rate) evolves it
-// with the return as the von Mises returns do: σ_e = σ_e,n + θ(σ_e,n; ε̇_p, T) Δε_p
-// (σ_e,n = state.sigma_e), inside the residuals (the Jacobian's differences see it).
+// A flow law with an internal stress (MTS, FlowStressModel::evolve_internal_stress) evolves it
+// with the return as the von Mises returns do: σ_e(Δε_p) = dσ_e/dε_p = θ(σ_e; ε̇_p, T) integrated
+// from σ_e,n = state.sigma_e over the increment, inside the residuals (the Jacobian's differences see it).
 //
 // Kinematic hardening (VT §18.7.1, eqs. 18.64-18.70): the yield is evaluated on the shifted
 // stress ξ = σ - β, the flow is Δε^p = Δλ ∂f/∂ξ (the whole gradient, with its trace, as

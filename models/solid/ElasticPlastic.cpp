@@ -60,14 +60,15 @@ ElasticPlastic::Return ElasticPlastic::plastic_return(const Eigen::Matrix3d& s_t
   const double H1 = kin_ ? kin_->linear_modulus() : 0.0, H2 = kin_ ? kin_->recovery_modulus() : 0.0;
   PlasticState s = st;
   FlowStress y;
-  // sigma_y and its derivatives at (Dg, T); MTS: sigma_e = sigma_e,n + theta Dg.
+  // sigma_y and its derivatives at (Dg, T); MTS: sigma_e(Dg) from eq. 10.19 integrated over Dg
+  // at the step's rate and T (FlowStressModel::evolve_internal_stress).
   auto evaluate = [&](double dg, double T) {
     s.eps_p = eps_n + dg;
     s.eps_p_rate = dg / dt;
     s.temperature = T;
     if (mts_) {
       s.sigma_e = st.sigma_e;
-      s.sigma_e = st.sigma_e + flow_->internal_stress_rate(s) * dg;
+      s.sigma_e = flow_->evolve_internal_stress(s, dg);
     }
     y = flow_->evaluate(s);
   };

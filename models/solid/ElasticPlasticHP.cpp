@@ -164,9 +164,9 @@ bool ElasticPlasticHP::update_point(const Eigen::Matrix3d& F_old, const Eigen::M
       for (int it = 0; it < 100; ++it) {
         st.eps_p = hist[kEpsP] + x;
         st.eps_p_rate = x / dt;
-        if (k_sigma_e_ >= 0) {  // MTS: sigma_e = sigma_e,n + theta(sigma_e,n) Delta (theta seeds d sigma_y/d eps_p)
+        if (k_sigma_e_ >= 0) {  // MTS: sigma_e(Delta) by eq. 10.19 over Delta (theta(sigma_e) seeds d sigma_y/d eps_p)
           st.sigma_e = sigma_e_n;
-          st.sigma_e = sigma_e_n + flow_->internal_stress_rate(st) * x;
+          st.sigma_e = flow_->evolve_internal_stress(st, x);
         }
         const FlowStress y = flow_->evaluate(st);
         const double a = 1.0 / (1.0 + c * H2 * x), da = -c * H2 * a * a;

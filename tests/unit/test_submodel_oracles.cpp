@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 
 #include "models/plasticity/FlowStressModel.h"
 #include "models/plasticity/PlasticityEos.h"
@@ -112,6 +113,49 @@ TEST(SubmodelFlow, ScgCapAndMelt) {
   s.melt_temperature = 2310;
   s.temperature = 2310;
   EXPECT_EQ(m->evaluate(s).sigma_y, 0.0);
+}
+
+// MTS sigma_e over a plastic increment (FlowStressModel::evolve_internal_stress) against the
+// closed form of eq. 10.19 with theta_IV = 0 at a fixed rate and T: with u = alpha sigma_e/sigma_es
+// and c = 1/tanh(alpha), d sigma_e/d eps_p = theta_0 (1 - c tanh u) integrates to
+//   alpha theta_0/sigma_es * eps_p = u/(1 - c^2) + c/(1 - c^2) ln(cosh u - c sinh u) + const
+// (cosh u = p D + q D', D = cosh u - c sinh u, p = 1/(1 - c^2), q = c p), valid below the
+// saturation u = alpha (D > 0). theta_0 = a_0 + a_1 ln edot + a_2 sqrt(edot) - a_3 T (10.21),
+// sigma_es = sigma_es0 exp(k/b^3 T/(g_0es mu) ln(edot/edot_es0)) (10.23).
+TEST(SubmodelFlow, MtsInternalStressIntegratesEquation10_19OverTheIncrement) {
+  MapModelParameters p(flow_samples().at("mechanical_threshold_stress"));
+  auto m = create_flow_stress_model("mechanical_threshold_stress", p);
+  const double rate = 1e3, T = 300, mu = 45e9, alpha = 2;
+  const double theta0 = 211.8e6 + 1e6 * std::log(rate) + 1e3 * std::sqrt(rate) - 1e4 * T;
+  const double ses = 1679.3e6 * std::exp(0.823e6 * T / (0.15 * mu) * std::log(rate / 3.42e8));
+  const double c = 1 / std::tanh(alpha), pp = 1 / (1 - c * c), q = c * pp;
+  auto eps_of = [&](double se) {  // the closed form's eps_p(sigma_e), up to the constant
+    const double u = alpha * se / ses;
+    return (pp * u + q * std::log(std::cosh(u) - c * std::sinh(u))) * ses / (alpha * theta0);
+  };
+  PlasticState s = at(0.1, rate, T);
+  s.shear_modulus = mu;
+  double worst = 0;
+  for (double se0 : {0.0, 50e6, 0.5 * ses})
+    for (double dep : {1e-3, 0.02, 0.3}) {
+      s.sigma_e = se0;
+      const double se1 = m->evolve_internal_stress(s, dep);
+      EXPECT_GT(se1, se0);
+      EXPECT_LT(se1, ses);  // below saturation
+      double lo = se0, hi = ses;  // the exact sigma_e,n+1: eps_of(x) - eps_of(se0) = dep (increasing in x)
+      for (int k = 0; k < 200; ++k) (eps_of(0.5 * (lo + hi)) - eps_of(se0) < dep ? lo : hi) = 0.5 * (lo + hi);
+      const double exact = 0.5 * (lo + hi);
+      // RK4 substeps with Delta eps_p L <= 0.1 (MtsFlow.cpp): local error ~1e-7 of the change.
+      EXPECT_NEAR(se1, exact, 1e-6 * (exact - se0)) << "sigma_e,n " << se0 << " dep " << dep;
+      worst = std::max(worst, std::abs(se1 - exact) / (exact - se0));
+    }
+  RecordProperty("worst_relative_error", testing::PrintToString(worst));
+  std::printf("MTS sigma_e over an increment vs the closed form: worst error %.2e of the change\n", worst);
+  s.sigma_e = 50e6;
+  EXPECT_EQ(m->evolve_internal_stress(s, 0.0), 50e6);
+  // The other laws carry no internal stress: sigma_e passes through.
+  MapModelParameters pj(flow_samples().at("johnson_cook"));
+  EXPECT_EQ(create_flow_stress_model("johnson_cook", pj)->evolve_internal_stress(s, 0.1), 50e6);
 }
 
 // MTS/PTW limit T -> T_m: strength falls with T (PTW: zero at T_m).
