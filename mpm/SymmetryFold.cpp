@@ -80,6 +80,11 @@ void fold_symmetry_particle_sums(const GridBoundaryConditions& bcs, NodeGrid& g)
   }
 }
 
+void fold_symmetry_scalar(const GridBoundaryConditions& bcs, const NodeGrid& g, std::vector<double>& q) {
+  for (int f = 0; f < 6; ++f)
+    if (active(bcs, g, f)) fold_field(g, f, q);
+}
+
 void fold_symmetry_internal_force(const GridBoundaryConditions& bcs, NodeGrid& g) {
   for (int f = 0; f < 6; ++f)
     if (active(bcs, g, f)) fold_field(g, f, g.internal_force);

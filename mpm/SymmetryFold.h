@@ -38,5 +38,8 @@ void fold_symmetry_internal_force(const GridBoundaryConditions& bcs, NodeGrid& g
 // A P2G velocity field v = (sum m_p v_p S)/m_g whose m_g is already folded:
 // folds the momentum v m_g (unfolded sum) and divides again.
 void fold_symmetry_velocity(const GridBoundaryConditions& bcs, const NodeGrid& g, std::vector<Vec3>& velocity);
+// One extensive node sum q (of g's node layout), folded as
+// fold_symmetry_particle_sums folds g.mass: the same faces, in the same order.
+void fold_symmetry_scalar(const GridBoundaryConditions& bcs, const NodeGrid& g, std::vector<double>& q);
 
 }  // namespace tephra

@@ -8,6 +8,7 @@
 #include <array>
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "core/grid/Loop.h"
 #include "mpmice/CellProjection.h"
@@ -18,28 +19,72 @@ namespace tephra {
 
 namespace {
 
-// The patch whose cells (with extra cells) hold c; c clamped into
-// [lo, hi) first (zero-gradient extension for nodes on the outer layer).
+// A cell field of all patches gathered into one array over the grid's
+// cells with extra cells (each cell from the patch whose cells with extra
+// cells hold it: the patches tile the grid), so that a node average reads
+// its 8 cells by index instead of searching the patches for each.
 template <class T>
-const T& cell_value(const Grid& g, const PatchFields<CellField<T>>& f, IntVec3 c, const IndexRange& clamp) {
-  for (int d = 0; d < 3; ++d) c[d] = std::clamp(c[d], clamp.lo[d], clamp.hi[d] - 1);
-  for (std::size_t pi = 0; pi < g.patches.size(); ++pi) {
-    const IndexRange r = g.patches[pi].cells_with_extra();
-    if ((c.array() >= r.lo.array()).all() && (c.array() < r.hi.array()).all()) return f[pi](c);
+struct FlatCells {
+  const PatchFields<CellField<T>>& f;
+  IndexRange r;
+  IntVec3 n;
+  std::vector<T> v;
+  std::vector<char> held;  // a patch of this rank holds the cell
+  T zero;                  // the start of a node sum (f at patch 0's first cell times 0)
+
+  FlatCells(const Grid& g, const PatchFields<CellField<T>>& fields)
+      : f(fields), r(g.cells_with_extra()), n(r.hi - r.lo), zero(fields[0](g.patches[0].lo) * 0.0) {
+    const std::size_t count = std::size_t(n[0]) * n[1] * n[2];
+    v.resize(count);
+    held.assign(count, 0);
+    for (std::size_t pi = 0; pi < g.patches.size(); ++pi)
+      for_each_cell_serial(g.patches[pi].cells_with_extra(), [&](int i, int j, int k) {
+        const std::size_t idx = index(IntVec3(i, j, k));
+        if (held[idx]) return;  // the first patch holding c, as a search in patch order finds
+        v[idx] = f[pi](i, j, k);
+        held[idx] = 1;
+      });
   }
-  return f[0](c);  // unreachable for c inside the grid
-}
+  std::size_t index(const IntVec3& c) const {
+    const IntVec3 a = c - r.lo;
+    return std::size_t(a[0]) + std::size_t(n[0]) * (std::size_t(a[1]) + std::size_t(n[1]) * a[2]);
+  }
+  // The value at cell c, c clamped into [lo, hi) first (zero-gradient
+  // extension for nodes on the outer layer).
+  const T& at(IntVec3 c, const IndexRange& clamp) const {
+    for (int d = 0; d < 3; ++d) c[d] = std::clamp(c[d], clamp.lo[d], clamp.hi[d] - 1);
+    const std::size_t idx = index(c);
+    return held[idx] ? v[idx] : f[0](c);
+  }
+};
 
 // 1/8 sum over the 8 cells that share node n.
 template <class T>
-T node_average(const Grid& g, const PatchFields<CellField<T>>& f, const IntVec3& node_as_cell, const IndexRange& clamp) {
-  T s = f[0](g.patches[0].lo) * 0.0;
+T node_average(const FlatCells<T>& f, const IntVec3& node_as_cell, const IndexRange& clamp) {
+  T s = f.zero;
   for (int c = 0; c < 8; ++c) {
     const IntVec3 cell = node_as_cell - IntVec3(c & 1, (c >> 1) & 1, (c >> 2) & 1);
-    s += 0.125 * cell_value(g, f, cell, clamp);
+    s += 0.125 * f.at(cell, clamp);
   }
   return s;
 }
+
+// node_cell_weight (CellProjection.h) of every node of ng: the weight and
+// which symmetry planes the node lies on (bit d: normal to d).
+struct NodeWeights {
+  std::vector<double> w;
+  std::vector<unsigned char> plane;
+  NodeWeights(const NodeGrid& ng, const std::array<bool, 6>& symmetric) : w(ng.count()), plane(ng.count()) {
+    for (int k = 0; k < ng.n[2]; ++k)
+      for (int j = 0; j < ng.n[1]; ++j)
+        for (int i = 0; i < ng.n[0]; ++i) {
+          const std::size_t gi = ng.index(i, j, k);
+          bool on[3];
+          w[gi] = node_cell_weight(ng, symmetric, IntVec3(i, j, k), on);
+          plane[gi] = static_cast<unsigned char>((on[0] ? 1 : 0) | (on[1] ? 2 : 0) | (on[2] ? 4 : 0));
+        }
+  }
+};
 
 }  // namespace
 
@@ -74,6 +119,7 @@ void MpmIceComponent::solid_state_to_cells() {
       if (ng.mass[gi] > 0.0) node_temperature_[s][gi] = mT[gi] / ng.mass[gi];
     const IntVec3 off = node_offset(g, ng);
     const std::array<bool, 6> symmetric = symmetry_faces(mm.bcs);
+    const NodeWeights nw(ng, symmetric);
     const IceMaterialSpec& spec = is.materials[s];
     const double min_mass = spec.tiny_rho * mm.density * V;
     IceMaterialFields& f = fields[s];
@@ -98,11 +144,10 @@ void MpmIceComponent::solid_state_to_cells() {
           // so its weight doubles per plane it lies on (x4 on an edge of two
           // planes), and its momentum normal to the plane is zero (the image
           // particles' normal velocities cancel the real ones').
-          bool on_plane[3];
-          const double w = node_cell_weight(ng, symmetric, node, on_plane);
+          const double w = nw.w[gi];
           Vec3 v = ng.velocity[gi];
           for (int d = 0; d < 3; ++d)
-            if (on_plane[d]) v[d] = 0;
+            if (nw.plane[gi] & (1 << d)) v[d] = 0;
           M += w * ng.mass[gi];
           P += w * ng.mass[gi] * v;
           MT += w * mT[gi];
@@ -153,6 +198,7 @@ void MpmIceComponent::pressure_to_particles() {
   const Grid& g = ice_->grid();
   const IndexRange all = g.cells_with_extra();
   particle_pressure_.resize(mpm_->materials().size());
+  const FlatCells<double> press(g, ice_->press_CC());
   for (std::size_t s = 0; s < mpm_->materials().size(); ++s) {
     const MpmMaterial& mm = mpm_->materials()[s];
     const NodeGrid& ng = mm.grid;
@@ -169,7 +215,7 @@ void MpmIceComponent::pressure_to_particles() {
           if (!done[gi]) {
             const std::size_t nx = std::size_t(ng.n[0]), ny = std::size_t(ng.n[1]);
             const IntVec3 node(int(gi % nx), int((gi / nx) % ny), int(gi / (nx * ny)));
-            pN[gi] = node_average(g, ice_->press_CC(), node - off, all);
+            pN[gi] = node_average(press, node - off, all);
             done[gi] = 1;
           }
           sum += w * pN[gi];
@@ -222,14 +268,16 @@ void MpmIceComponent::cell_changes_to_nodes_and_particles() {
     NodeGrid& ng = mm.grid;
     const IntVec3 off = node_offset(g, ng);
     std::vector<double> dTN(ng.count(), 0.0);
+    const FlatCells<Vec3> duf(g, du);
+    const FlatCells<double> dTf(g, dT);
     for (int k = 0; k < ng.n[2]; ++k)
       for (int j = 0; j < ng.n[1]; ++j)
         for (int i = 0; i < ng.n[0]; ++i) {
           const std::size_t gi = ng.index(i, j, k);
           if (!(ng.mass[gi] > 0.0)) continue;
           const IntVec3 c = IntVec3(i, j, k) - off;
-          ng.velocity_star[gi] += node_average(g, du, c, interior);
-          dTN[gi] = node_average(g, dT, c, interior);
+          ng.velocity_star[gi] += node_average(duf, c, interior);
+          dTN[gi] = node_average(dTf, c, interior);
         }
     Particles& p = mm.particles;
     const Stencils& st = mm.stencils;

@@ -24,6 +24,10 @@
 #include "core/grid/Loop.h"
 #include "mpm/SymmetryFold.h"
 #include "mpm/shape/AxisStencils.h"
+#include "mpm/shape/ShapeAxis.h"
+#include "mpm/shape/ShapeBspline.h"
+#include "mpm/shape/ShapeGimp.h"
+#include "mpm/shape/ShapeLinear.h"
 #include "mpmice/CellProjection.h"
 #include "mpmice/MpmIceComponent.h"
 
@@ -43,8 +47,89 @@ struct CellIndex {
   }
 };
 
+// The particles' 1-D shape factors per axis (the per-axis stencil form of
+// mpm/shape/Interpolator.h: S_gp = S_x[a] S_y[b] S_z[c]), kept per axis so that
+// a move along one axis recomputes that axis only: the other axes' factors
+// depend on the other coordinates, which the move leaves bit for bit.
+// The factors are those of compute_axis_stencils (fill_axis_particle in
+// mpm/shape/ComputeStencils.cpp: the same 1-D functions of the same
+// xi = (x - origin)/h and half-length psize/2, the same validity rules), so
+// the weights S_x S_y S_z, formed in the same order, are the same bits.
+struct AxisFactors {
+  int N = 0;                       // nodes per axis: 2 linear, 3 GIMP / quadratic B-spline; 0: no per-axis form
+  std::vector<int> first[3];       // lowest node of particle i's support along d
+  std::vector<double> S[3];        // S[d][i * N + a]
+
+  // N for the interpolator, 0 if it has no per-axis form (compute_axis_stencils' switch).
+  static int nodes_per_axis(InterpolatorKind k) {
+    switch (k) {
+      case InterpolatorKind::Linear: return 2;
+      case InterpolatorKind::Gimp: return 3;
+      case InterpolatorKind::QuadraticBspline: return 3;
+      default: return 0;
+    }
+  }
+
+  // Axis d of every particle of q on grid sg; false when a particle's support
+  // leaves the grid along d or has another node count (where
+  // compute_axis_stencils fails).
+  bool fill(InterpolatorKind kind, const Particles& q, const NodeGrid& sg, int d) {
+    const std::size_t np = q.size();
+    first[d].resize(np);
+    S[d].resize(np * std::size_t(N));
+    bool ok = true;
+    for (std::size_t i = 0; i < np; ++i) {
+      const double xi = (q.x[i][d] - sg.origin[d]) / sg.h[d];
+      if (!(xi >= 0.0 && xi < sg.n[d] - 1)) {
+        ok = false;
+        continue;
+      }
+      ShapeAxis ax;
+      if (kind == InterpolatorKind::Linear) ax = linear_axis(xi);
+      else if (kind == InterpolatorKind::Gimp) ax = gimp_axis(xi, 0.5 * q.psize[i](d, d));
+      else ax = quadratic_bspline_axis(xi);
+      if (ax.count != N || ax.first < 0 || ax.first + N > sg.n[d]) {
+        ok = false;
+        continue;
+      }
+      first[d][i] = ax.first;
+      for (int a = 0; a < N; ++a) S[d][i * std::size_t(N) + std::size_t(a)] = ax.S[a];
+    }
+    return ok;
+  }
+
+  // m_g = sum_p m_p S_gp, particle by particle in index order and each
+  // particle's nodes x fastest (the order of visit_stencils, so the same sums).
+  template <int NN>
+  void scatter_mass(const std::vector<double>& mass, const NodeGrid& sg, std::vector<double>& m) const {
+    const std::size_t sy = std::size_t(sg.n[0]), sz = std::size_t(sg.n[0]) * std::size_t(sg.n[1]);
+    for (std::size_t i = 0; i < mass.size(); ++i) {
+      const double* X = S[0].data() + i * NN;
+      const double* Y = S[1].data() + i * NN;
+      const double* Z = S[2].data() + i * NN;
+      const std::size_t base = sg.index(first[0][i], first[1][i], first[2][i]);
+      for (int c = 0; c < NN; ++c)
+        for (int b = 0; b < NN; ++b) {
+          const std::size_t row = base + sy * std::size_t(b) + sz * std::size_t(c);
+          const double y = Y[b], z = Z[c];
+          for (int a = 0; a < NN; ++a) m[row + std::size_t(a)] += mass[i] * (X[a] * y * z);
+        }
+    }
+  }
+};
+
 }  // namespace
 
+// Cost (docs/performance.md, MPMICE): per material, one projection of the
+// particles' start positions and one per axis along which some particle
+// moves (an axis with no displacement at all - z of a 2-D deck - has
+// M1 = M0 bit for bit and so zero flux: skipped); each projection
+// recomputes only the moved axis' shape factors, scatters the mass alone
+// (not the whole NodeGrid) and averages nodes to cells with the node
+// weights tabulated once. The result is bit for bit that of projecting all
+// particles with compute_axis_stencils + P2G + fold + the node -> cell sum;
+// an interpolator without the per-axis form, or a particle whose per-axis
+// support fails, takes that general route (project_general below).
 void MpmIceComponent::solid_mass_fluxes(double dt) {
   const Grid& g = ice_->grid();
   const CellIndex ci(g);
@@ -61,31 +146,23 @@ void MpmIceComponent::solid_mass_fluxes(double dt) {
       for (std::size_t i = 0; i < p.size(); ++i)
         view.weights(i, [&](std::size_t gi, double w) { disp[i] += dt * w * ng.velocity[gi]; });
     });
-    // Scratch particles (position, domain, F: what the stencils read).
+    // Scratch particles (position and domain: what the per-axis factors read).
     Particles& q = flux_particles_;
     q.x = p.x;
     q.psize = p.psize;
-    q.F = p.F;
     NodeGrid& sg = flux_grid_;
     sg.origin = ng.origin;
     sg.h = ng.h;
     sg.n = ng.n;
     sg.extra = ng.extra;
-    // M_c of the scratch particles' positions, every cell with extra cells.
-    auto project = [&](std::vector<double>& M) {
-      Stencils st;
-      if (!compute_axis_stencils(q, sg, spec, st) && compute_stencils(q, sg, spec, st) >= 0) {
-        // A particle would leave the grid during the step: no flux for it
-        // (MPM reports the particle when it does leave).
-        M.assign(ci.count(), 0.0);
-        return false;
-      }
-      sg.reset();
-      visit_stencils(st, [&](const auto& view) {
-        for (std::size_t i = 0; i < q.size(); ++i)
-          view.weights(i, [&](std::size_t gi, double w) { sg.mass[gi] += p.mass[i] * w; });
-      });
-      fold_symmetry_particle_sums(mm.bcs, sg);
+    // The node -> cell weight of every node (CellProjection.h).
+    std::vector<double> wnode(sg.count());
+    for (int k = 0; k < sg.n[2]; ++k)
+      for (int j = 0; j < sg.n[1]; ++j)
+        for (int i = 0; i < sg.n[0]; ++i) wnode[sg.index(i, j, k)] = node_cell_weight(sg, symmetric, IntVec3(i, j, k));
+    std::vector<double> node_mass;
+    // M_c = sum of its 8 corner nodes' w_n m_n (n in the order 0..7, x fastest).
+    auto nodes_to_cells = [&](std::vector<double>& M) {
       M.assign(ci.count(), 0.0);
       for_each_cell_serial(g.cells_with_extra(), [&](int i, int j, int k) {
         const IntVec3 c(i, j, k);
@@ -93,17 +170,64 @@ void MpmIceComponent::solid_mass_fluxes(double dt) {
         for (int n = 0; n < 8; ++n) {
           const IntVec3 node = c + off + IntVec3(n & 1, (n >> 1) & 1, (n >> 2) & 1);
           if ((node.array() < 0).any() || (node.array() >= sg.n.array()).any()) continue;
-          sum += node_cell_weight(sg, symmetric, node) * sg.mass[sg.index(node)];
+          const std::size_t gi = sg.index(node);
+          sum += wnode[gi] * node_mass[gi];
         }
         M[ci(c)] = sum;
       });
+    };
+    // The general route: stencils of the scratch particles, P2G of the mass,
+    // symmetry fold.
+    auto project_general = [&](std::vector<double>& M) {
+      q.F = p.F;  // CPDI-type domains
+      Stencils st;
+      if (!compute_axis_stencils(q, sg, spec, st) && compute_stencils(q, sg, spec, st) >= 0) {
+        // A particle would leave the grid during the step: no flux for it
+        // (MPM reports the particle when it does leave).
+        M.assign(ci.count(), 0.0);
+        return false;
+      }
+      node_mass.assign(sg.count(), 0.0);
+      visit_stencils(st, [&](const auto& view) {
+        for (std::size_t i = 0; i < q.size(); ++i)
+          view.weights(i, [&](std::size_t gi, double w) { node_mass[gi] += p.mass[i] * w; });
+      });
+      fold_symmetry_scalar(mm.bcs, sg, node_mass);
+      nodes_to_cells(M);
+      return true;
+    };
+    AxisFactors fac;
+    fac.N = AxisFactors::nodes_per_axis(spec.kind);
+    bool axis_ok[3] = {false, false, false};
+    if (fac.N)
+      for (int d = 0; d < 3; ++d) axis_ok[d] = fac.fill(spec.kind, q, sg, d);
+    // M_c of the scratch particles' present positions, every cell with extra cells.
+    auto project = [&](std::vector<double>& M) {
+      if (!(fac.N && axis_ok[0] && axis_ok[1] && axis_ok[2])) return project_general(M);
+      node_mass.assign(sg.count(), 0.0);
+      if (fac.N == 2) fac.scatter_mass<2>(p.mass, sg, node_mass);
+      else fac.scatter_mass<3>(p.mass, sg, node_mass);
+      fold_symmetry_scalar(mm.bcs, sg, node_mass);
+      nodes_to_cells(M);
       return true;
     };
     FaceScalars& F = ice_->lagrangian_mass_flux(s);
     std::vector<double> M0, M1, flux(ci.count());
     bool ok = project(M0);
     for (int d = 0; d < 3; ++d) {
+      bool moved = false;
+      for (std::size_t i = 0; i < p.size(); ++i) moved = moved || disp[i][d] != 0.0;
+      if (!moved) {
+        // x_d unchanged: M1 = M0 bit for bit, every face flux along d is 0.
+        for (std::size_t pi = 0; pi < g.patches.size(); ++pi) {
+          GridArray<double>& Fd = F.at(d, pi);
+          const Patch& patch = g.patches[pi];
+          for_each_cell_serial({patch.lo, patch.hi + IntVec3::Unit(d)}, [&](int i, int j, int k) { Fd(i, j, k) = 0.0; });
+        }
+        continue;
+      }
       for (std::size_t i = 0; i < p.size(); ++i) q.x[i][d] += disp[i][d];
+      if (fac.N) axis_ok[d] = fac.fill(spec.kind, q, sg, d);
       ok = project(M1) && ok;
       // Row sums along d: flux[c] = mass through c's lower face along d.
       const IndexRange r = g.cells_with_extra();

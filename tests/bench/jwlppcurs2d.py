@@ -7,6 +7,13 @@ copper wall's radial velocity against time.
 Usage:
   tests/bench/jwlppcurs2d.py BUILD_DIR run     confined|unconfined [OUT_ROOT] [--end-time T]
   tests/bench/jwlppcurs2d.py BUILD_DIR analyse confined|unconfined [OUT_ROOT]
+  tests/bench/jwlppcurs2d.py BUILD_DIR plot    both [OUT_ROOT] [--png-dir DIR]
+(run: --threads 1 is passed: on a loaded machine two OpenMP threads spent
+4.7x the CPU time of one, libgomp's spin-waits, docs/performance.md MPMICE;
+plot: analyses OUT_ROOT/confined and OUT_ROOT/unconfined, whichever exist,
+and writes DIR/jwlppcurs2d-wall-velocity.png (copper wall v_y against t at
+the three stations), DIR/jwlppcurs2d-front.png (front x against t, both
+sticks) and DIR/jwlppcurs2d.csv (the histories); DIR defaults to OUT_ROOT.)
 
 The deck is 2-D planar (200 x 48 x 1 cells of 0.25 mm, x in [-10, 40] mm,
 y in [0, 12] mm, symmetry at y = 0): a slab of ANFO of half-thickness 6 mm
@@ -34,7 +41,7 @@ import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
-from rate_stick_size_effect import D_CJ, fit_slope  # noqa: E402
+from rate_stick_size_effect import D_CJ, FONT, fit_slope, write_png  # noqa: E402
 
 DECKS = os.path.normpath(os.path.join(HERE, "..", "..", "..", "shared", "decks"))
 DECK = os.path.join(DECKS, "inputs", "MPMICE", "JWLppCuRS2d.ups")
@@ -106,6 +113,94 @@ def analyse(tephra, out, kind):
     return d
 
 
+def plot_series(png, series, xr, yr, xticks, yticks, xlabel, ylabel, legend):
+    """Line plot, linear axes: series = [(points [(x, y)], colour)],
+    xr/yr = (lo, hi), ticks = lists of values, labels drawn with the 5x7 font."""
+    W, H, L, R, T, B = 720, 480, 70, 20, 20, 50
+    px = bytearray([255] * (W * H * 3))
+    X = lambda x: L + (x - xr[0]) / (xr[1] - xr[0]) * (W - L - R)
+    Y = lambda y: H - B - (y - yr[0]) / (yr[1] - yr[0]) * (H - T - B)
+
+    def dot(x, y, c):
+        if 0 <= x < W and 0 <= y < H:
+            i = (int(y) * W + int(x)) * 3
+            px[i:i + 3] = bytes(c)
+
+    def line(x0, y0, x1, y1, c, dotted=False):
+        n = int(max(abs(x1 - x0), abs(y1 - y0))) + 1
+        for k in range(n + 1):
+            if dotted and (k // 4) % 2:
+                continue
+            dot(x0 + (x1 - x0) * k / n, y0 + (y1 - y0) * k / n, c)
+            if not dotted:
+                dot(x0 + (x1 - x0) * k / n, y0 + (y1 - y0) * k / n + 1, c)
+
+    def text(x, y, s, c=(0, 0, 0)):
+        for k, ch in enumerate(s.upper()):
+            for row, bits in enumerate(FONT.get(ch, FONT[" "])):
+                for col in range(5):
+                    if bits & (0x10 >> col):
+                        dot(x + 6 * k + col, y + row, c)
+
+    black, grid = (0, 0, 0), (225, 225, 225)
+    for v in xticks:
+        line(X(v), T, X(v), H - B, grid, dotted=True)
+        line(X(v), H - B, X(v), H - B + 6, black)
+        text(X(v) - 9, H - B + 10, f"{v:g}")
+    for v in yticks:
+        line(L, Y(v), W - R, Y(v), grid, dotted=True)
+        line(L - 6, Y(v), L, Y(v), black)
+        text(L - 40, Y(v) - 3, f"{v:g}")
+    text((L + W) // 2 - 3 * len(xlabel), H - 18, xlabel)
+    text(L + 4, 6, ylabel)
+    line(L, H - B, W - R, H - B, black)
+    line(L, T, L, H - B, black)
+    for pts, c in series:
+        pts = [(x, y) for x, y in pts if y is not None]
+        for (a, b), (u, v) in zip(pts, pts[1:]):
+            line(X(a), Y(b), X(u), Y(v), c)
+    for k, (name, c) in enumerate(legend):
+        text(L + 12, T + 8 + 11 * k, name, c)
+    write_png(png, W, H, px)
+
+
+def plot_all(tephra, root, png_dir):
+    colours = [(30, 90, 220), (20, 160, 60), (200, 0, 0)]
+    fronts, wall = {}, {}
+    for kind in ("confined", "unconfined"):
+        out = os.path.join(root, kind)
+        if os.path.isdir(out):
+            fronts[kind] = front_history(tephra, out)
+            if kind == "confined":
+                wall = wall_history(tephra, out)
+    rows = []
+    for kind, f in fronts.items():
+        rows += [(kind, "front_x_m", t, x) for t, x in f]
+    for st, h in wall.items():
+        rows += [("confined", f"wall_vy_m_per_s_at_x_{st * 1e3:.0f}mm", t, v) for t, v in h]
+    with open(os.path.join(png_dir, "jwlppcurs2d.csv"), "w") as fh:
+        fh.write("run,quantity,time_s,value\n")
+        for r in rows:
+            fh.write(f"{r[0]},{r[1]},{r[2]:.6e},{'' if r[3] is None else f'{r[3]:.6e}'}\n")
+    tmax = max([t for f in fronts.values() for t, _ in f] + [1e-6])
+    tt = 2.0 * (int(tmax * 1e6 / 2.0) + 1)
+    xt = [2.0 * k for k in range(int(tt / 2) + 1)]
+    if wall:
+        vmax = max([v for h in wall.values() for _, v in h] + [100.0])
+        vt = 100.0 * (int(vmax / 100.0) + 1)
+        plot_series(os.path.join(png_dir, "jwlppcurs2d-wall-velocity.png"),
+                    [([(t * 1e6, v) for t, v in h], colours[k]) for k, h in enumerate(wall.values())],
+                    (0.0, tt), (min(0.0, min(v for h in wall.values() for _, v in h)), vt), xt,
+                    [100.0 * k for k in range(int(vt / 100) + 1)][::max(1, int(vt / 100) // 10)],
+                    "T (US)", "WALL RADIAL VELOCITY V_Y (M/S), OUTER COPPER LAYER",
+                    [(f"X = {st * 1e3:.0f} MM", colours[k]) for k, st in enumerate(wall)])
+    plot_series(os.path.join(png_dir, "jwlppcurs2d-front.png"),
+                [([(t * 1e6, None if x is None else x * 1e3) for t, x in f], colours[k]) for k, f in enumerate(fronts.values())],
+                (0.0, tt), (0.0, 40.0), xt, [5.0 * k for k in range(9)], "T (US)",
+                "DETONATION FRONT X (MM), AXIS CELLS WITH F AT LEAST 0.5",
+                [(kind.upper(), colours[k]) for k, kind in enumerate(fronts)])
+
+
 def main():
     build, mode, kind = sys.argv[1], sys.argv[2], sys.argv[3]
     args = [a for a in sys.argv[4:]]
@@ -114,14 +209,22 @@ def main():
         i = args.index("--end-time")
         end = args[i + 1]
         del args[i:i + 2]
+    png_dir = None
+    if "--png-dir" in args:
+        i = args.index("--png-dir")
+        png_dir = args[i + 1]
+        del args[i:i + 2]
     root = args[0] if args else "/tmp/jwlppcurs2d"
     tephra = os.path.join(build, "bin", "tephra")
+    if mode == "plot":
+        plot_all(tephra, root, png_dir or root)
+        return
     out = os.path.join(root, kind)
     if mode == "run":
         os.makedirs(root, exist_ok=True)
         deck = out + ".ups"
         open(deck, "w").write(make_deck(kind))
-        cmd = [tephra, deck, "--output", out]
+        cmd = [tephra, deck, "--output", out, "--threads", "1"]
         if end:
             cmd += ["--end-time", end]
         subprocess.run(cmd, check=True)
