@@ -20,7 +20,10 @@ def extract(tephra, d, var, m):
     if r.returncode != 0:
         return None
     lines = r.stdout.splitlines()
-    return [l.split(",") for l in lines[1:]]
+    # sorted by (time, i, j, k): runs with different patch layouts list the
+    # cells in different orders
+    rows = [l.split(",") for l in lines[1:]]
+    return sorted(rows, key=lambda r: (float(r[0]), int(r[1]), int(r[2]), int(r[3])))
 
 
 def main():
