@@ -39,12 +39,23 @@ void exchange_impl(const Grid& g, PatchFields<FieldT>& pf, bool nodes) {
     const IndexRange all = f.with_ghosts();
     const IndexRange rows{all.lo, IntVec3(all.lo[0] + 1, all.hi[1], all.hi[2])};
     for_each_cell(rows, [&](int, int j, int k) {
+      // Cells: the with_extra() boxes of the patches partition the level
+      // (interior cells plus the extra cells of domain faces), so s lies in
+      // patch q's box exactly when owner_patch(s) == q; the last owner is
+      // reused while s stays in its box (one patch lookup per run of a row
+      // instead of one per cell; the same entries are copied). Nodes on a
+      // patch boundary lie in two node boxes: looked up every time.
       auto fill = [&](int i0, int i1) {
+        int q = -1;
+        IndexRange box_q{};
         for (int i = i0; i < i1; ++i) {
           const IntVec3 c(i, j, k);
           IntVec3 s;
           if (!owner_index(g, c, nodes, s)) continue;
-          const int q = owner_patch(g, s);
+          if (nodes || q < 0 || !box_q.contains(s)) {
+            q = owner_patch(g, s);
+            box_q = pf[size_t(q)].with_extra();
+          }
           f(c) = pf[size_t(q)](s);
         }
       };

@@ -37,8 +37,13 @@ struct Jwl {
 //   dp/drho = (R1 V P1 + R2 V P2)/rho + (1 + om) P3/rho,  dp/de = 0
 struct Jwlc {
   double A, B, C, R1, R2, om, rho0;
+  // An absent product (tiny_rho, V = rho0/rho ~ 700 for ANFO at 1 atm) has
+  // R V far beyond the underflow of exp: exp(-x) is exactly 0 in IEEE double
+  // for x > 745.14, and libm reaches that 0 through its slow underflow path
+  // (errno, xflow). exp_neg returns the same 0 without the call.
+  static double exp_neg(double x) { return x > 746.0 ? 0.0 : std::exp(-x); }
   PointThermo point(double rho, double) const {
-    const double V = rho0 / rho, P1 = A * std::exp(-R1 * V), P2 = B * std::exp(-R2 * V);
+    const double V = rho0 / rho, P1 = A * exp_neg(R1 * V), P2 = B * exp_neg(R2 * V);
     const double P3 = C * std::pow(rho / rho0, 1.0 + om);
     return {P1 + P2 + P3, (R1 * V * P1 + R2 * V * P2 + (1.0 + om) * P3) / rho, 0.0};
   }

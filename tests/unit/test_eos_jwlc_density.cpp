@@ -64,5 +64,30 @@ TEST(JwlcDensity, LowDensityLimitIsThePowerLaw) {
   }
 }
 
+// The JWLC point skips exp(-R V) when R V > 746 (an absent product at 1 atm
+// has V = rho0/rho ~ 700, R1 V ~ 3500): in IEEE double exp(-x) rounds to 0
+// for every x > 745.14 (the smallest subnormal is 4.94e-324 = e^{-744.44}),
+// so the skip returns the same 0 as the library, only without its slow
+// underflow path. Checked: the library fact at the threshold, and p, dp/drho
+// of the EOS equal (bit for bit) the unguarded closed form jwlc() at
+// relative volumes V = 1 .. 2000, where R1 V and R2 V each cross 746.
+TEST(JwlcDensity, UnderflowSkipGivesTheClosedFormBitForBit) {
+  EXPECT_EQ(std::exp(-746.0), 0.0);
+  EXPECT_GT(std::exp(-745.0), 0.0);
+  const EquationOfStateP eos = anfo();
+  int crossed_r1 = 0, crossed_r2 = 0;
+  for (int k = 0; k <= 4000; ++k) {
+    const double V = std::pow(2000.0, k / 4000.0), rho = kRho0 / V;
+    const EosState s = eos->at(rho, 300.0);
+    const auto [p, dp] = jwlc(rho);
+    ASSERT_EQ(s.p, p) << "V=" << V;
+    ASSERT_EQ(s.dp_drho, dp) << "V=" << V;
+    crossed_r1 += kR1 * V > 746.0;
+    crossed_r2 += kR2 * V > 746.0;
+  }
+  EXPECT_GT(crossed_r1, 0);
+  EXPECT_GT(crossed_r2, 0);
+}
+
 }  // namespace
 }  // namespace tephra

@@ -106,6 +106,11 @@ TEST(GridHalo, CellGhostsFromNeighbours2x2x2) {
   check_exchange<CellField<double>>(g, 1, 0, f);
   check_exchange<CellField<double>>(g, 2, 0, f);  // ghosts beyond the extra cells stay untouched
   check_exchange<CellField<Vec3>>(g, 1, 0, fv);
+  // The rate-stick layout (patches [4,1,1] of unequal length along x, two
+  // ghost layers): a row's ghosts come from several patches in turn (the
+  // exchange reuses a row's last owner while the index stays in its box).
+  Grid rows = patched_grid(IntVec3(13, 3, 2), IntVec3(4, 1, 1), IntVec3(1, 1, 1), IntVec3::Zero());
+  check_exchange<CellField<double>>(rows, 2, 0, f);
 }
 
 TEST(GridHalo, CellGhostsWithPeriodicWrap) {
