@@ -16,6 +16,7 @@
 // call by Gaussian elimination without pivoting (the matrix is strictly
 // diagonally dominant by rows); N <= kMaxExchangeMaterials; N = 2 by its
 // closed form (TwoByTwo).
+#include <algorithm>
 #include <cassert>
 #include <span>
 
@@ -121,6 +122,25 @@ inline void solve_exchange3(double dt, std::span<const double> theta, std::span<
   exchange_detail::exchange_matrix(dt, theta, sp_vol, {}, coeff, a);
   std::span<double> b[3] = {ux, uy, uz};
   exchange_detail::solve_dominant(static_cast<int>(theta.size()), a, b, 3);
+}
+
+// <exchange_properties><heatExchangeCoeff> variable (Uintah's
+// ExchangeCoefficients::getVariableExchangeCoeff; the momentum coefficients
+// stay the deck's): per cell, for every pair of materials, with the ratio of
+// their Lagrangian masses r = M_L,n / M_L,m,
+//   H_mn = H_nm = min(1e12, max(1e5, r^2, 1/r^2))   [W/(m^3 K)],
+// Uintah's five branches (r^2 < 1e-12: 1e12; < 1e-5: 1/r^2; < 1e5: 1e5;
+// < 1e12: r^2; else 1e12) in one line. H: n x n row-major, zero diagonal.
+inline void variable_heat_coefficients(std::span<const double> mass_L, double* H) {
+  const std::size_t n = mass_L.size();
+  for (std::size_t m = 0; m < n; ++m) {
+    H[m * n + m] = 0.0;
+    for (std::size_t q = m + 1; q < n; ++q) {
+      const double r = mass_L[q] / mass_L[m], r2 = r * r;
+      const double h = std::min(1e12, std::max({1e5, r2, 1.0 / r2}));
+      H[m * n + q] = H[q * n + m] = h;
+    }
+  }
 }
 
 }  // namespace tephra

@@ -357,12 +357,26 @@ void IceComponent::advance_one(double dt, int step) {
   check_state(step, "end of step");
 }
 
-// The coupled MPMICE step calls the explicit step in two halves (the order
-// of advance_one, without the implicit pressure, which the MPMICE deck reader
-// rejects for now, and without the half-step restarts).
+// The coupled MPMICE step calls the step in two halves (the order of
+// advance_one, without the half-step restarts: the particles have moved, so a
+// failed implicit solve stops the run with exit 4).
 void IceComponent::coupled_pressure_phases(double dt, int step) {
   PhaseTimers& T = phase_timers();
   { PhaseTimers::Scope s(T, "ICE: equilibration pressure");       compute_equilibration_pressure(step); }
+  if (setup_.implicit.enabled) {
+    if (model_src_) { PhaseTimers::Scope s(T, "ICE: model sources"); compute_model_sources(dt, step); }
+    {
+      PhaseTimers::Scope s(T, "ICE: implicit pressure");
+      try {
+        implicit_pressure_solve(dt, step);
+      } catch (const StepRestart& r) {
+        throw NumericalFailure("MPMICE implicit pressure at step " + std::to_string(step) + ": " + r.why +
+                               " (a coupled step cannot be redone with a smaller time step)");
+      }
+    }
+    { PhaseTimers::Scope s(T, "ICE: face pressure");              compute_face_pressure(); }
+    return;
+  }
   { PhaseTimers::Scope s(T, "ICE: face velocities");              compute_face_velocities(dt, press_equil_CC_); }
   { PhaseTimers::Scope s(T, "ICE: face momentum exchange");       add_exchange_to_face_velocities(dt); }
   if (model_src_) { PhaseTimers::Scope s(T, "ICE: model sources"); compute_model_sources(dt, step); }

@@ -123,7 +123,8 @@ class IceComponent final : public Component {
   void advance_with_restarts(double dt, int step, int depth);
   void implicit_pressure_solve(double dt, int step);
   void assemble_pressure_matrix(double dt);
-  double pressure_residual(double dt);  // fills rhs_, returns max |rhs|
+  double pressure_residual(double dt);  // fills rhs_, returns max |rhs| (its cell: max_rhs_cell_)
+  std::string residual_where() const;
   void sum_volume_flux_and_kappa(double dt);
   struct StepRestart {
     std::string why;
@@ -133,6 +134,15 @@ class IceComponent final : public Component {
   bool has_lagrangian_flux(std::size_t m) const;
   void lagrangian_volume_flux(std::size_t m, FaceScalars& flux) const;
   void scale_fluid_flux(std::size_t m, double dt, FaceScalars& flux);
+  // theta_s,face of solid s on face R of axis d, the solid's phi = u dt/dx
+  // there, and whether theta_s,face = F_s/phi_s (unclamped) varies with phi_s.
+  struct SolidFaceFraction {
+    double theta = 0, phi = 0;
+    bool varies = false;
+  };
+  SolidFaceFraction solid_face_fraction(std::size_t s, int d, std::size_t pi, const IntVec3& R, double dt) const;
+  // a_f of the implicit pressure matrix on face R of axis d (ImplicitPressureMatrix.cpp).
+  double pressure_face_coefficient(int d, std::size_t pi, const IntVec3& R, double dt, bool boundary, int face) const;
   void fluids_fill_volume_left_by_solids();  // MPMICE initial state (IceComponent.cpp)
   void apply_state_bcs(std::size_t m);  // rho, vel, temp, sp_vol extra cells of material m
   // LODI faces (IceLodiBcs.cpp, ice/Lodi.h): the pressure, the Lagrangian
@@ -181,6 +191,7 @@ class IceComponent final : public Component {
   StencilCoefficients stencil_;
   CellScalars rhs_, delta_p_;
   int last_outer_iterations_ = 0, step_restarts_ = 0;
+  IntVec3 max_rhs_cell_ = IntVec3::Zero();
   // Source models: per-step sources (null without models), delP_MassX, the
   // Lagrangian value of a model scalar, and the time at the start of the step.
   std::unique_ptr<IceModelSources> model_src_;

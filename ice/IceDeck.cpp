@@ -519,6 +519,10 @@ IceSetup read_ice_setup(const Deck& deck, std::vector<IceMaterialSpec> solids, c
         ec = &c;
         for (const DeckNode& k : c.children)
           if (k.name != "momentum" && k.name != "heat") k.missing_feature("<exchange_coefficients><" + k.name + ">");
+      } else if (c.name == "heatExchangeCoeff") {  // Uintah: constant (default) or variable
+        const std::string model = lower(c.text);
+        if (model == "variable") s.variable_heat_exchange = true;
+        else if (model != "constant") c.fail("<heatExchangeCoeff> must be 'constant' or 'variable'");
       } else {
         c.missing_feature("<exchange_properties><" + c.name + ">");
       }
@@ -526,7 +530,8 @@ IceSetup read_ice_setup(const Deck& deck, std::vector<IceMaterialSpec> solids, c
   }
   if (n > 1 && !ec) props.fail("two or more materials need <exchange_properties><exchange_coefficients>");
   s.K = parse_coefficients(ec, "momentum", n);
-  s.H = parse_coefficients(ec, "heat", n);
+  // variable: the per-cell coefficients replace <heat>, which Uintah then does not read.
+  s.H = s.variable_heat_exchange ? std::vector<double>(std::size_t(n * n), 0.0) : parse_coefficients(ec, "heat", n);
 
   const BoundaryConditions bcs = parse_boundary_conditions(grid_node);
   if (bcs.sine || bcs.micro_slip)

@@ -65,6 +65,35 @@ void IceComponent::lagrangian_volume_flux(std::size_t m, FaceScalars& flux) cons
     }
 }
 
+// theta_s,face of solid s on the face R of axis d (comment at the top):
+// F_s / phi_s with F_s = F_M v_D / V, phi_s = u_s dt/dx (the solid's face
+// velocity after exchange), clamped to [0, 1]. The face fraction of a flux
+// against the face velocity is 0 (a round-off flux at the end of a row); a
+// face whose solid face velocity is ~0 (the fluids locked to it hardly cross
+// it) takes the mean of the two cells' solid fractions. `varies`: the value is
+// F_s/phi_s strictly inside (0, 1), so it changes with phi_s (the implicit
+// pressure matrix linearises it, ImplicitPressureMatrix.cpp).
+IceComponent::SolidFaceFraction IceComponent::solid_face_fraction(std::size_t s, int d, std::size_t pi, const IntVec3& R,
+                                                                  double dt) const {
+  const IceMaterialFields& fs = mats_[s];
+  const Grid& g = setup_.grid;
+  const double FM = lag_mass_flux_[s].at(d, pi)(R);
+  SolidFaceFraction out;
+  if (FM == 0.0) return out;
+  const IntVec3 L = R - IntVec3::Unit(d);
+  const double inv_V = 1.0 / g.cell_volume(), dt_dx = dt / g.dx[d];
+  const double Fv = FM * (FM > 0 ? fs.sp_vol_CC[pi](L) : fs.sp_vol_CC[pi](R)) * inv_V;
+  out.phi = fs.vel_FCME.at(d, pi)(R) * dt_dx;  // signed
+  if (std::abs(out.phi) <= 1e-14) {
+    out.theta = std::clamp(0.5 * (fs.vol_frac_CC[pi](L) + fs.vol_frac_CC[pi](R)), 0.0, 1.0);
+    return out;
+  }
+  const double t = Fv / out.phi;
+  out.theta = std::clamp(t, 0.0, 1.0);
+  out.varies = t > 0.0 && t < 1.0;
+  return out;
+}
+
 // flux *= chi (above) on every face, for fluid m, with a positivity limit:
 // where the scaled outflow of a donor cell, sum_out phi chi (in units of its
 // content), exceeds max(1/2, sum_out phi) its outgoing chi are scaled down to
@@ -85,30 +114,16 @@ void IceComponent::scale_fluid_flux(std::size_t m, double dt, FaceScalars& flux)
     lag_chi_ = FaceScalars(g, 0);
     lag_limit_ = CellScalars(g, 2);
   }
-  const double inv_V = 1.0 / g.cell_volume();
   const FaceScalars& u = mats_[m].vel_FCME;
   for (std::size_t pi = 0; pi < g.patches.size(); ++pi)
     for (int d = 0; d < 3; ++d) {
       const IntVec3 e = IntVec3::Unit(d);
-      const double dt_dx = dt / g.dx[d];
       GridArray<double>& chi = lag_chi_.at(d, pi);
       const GridArray<double>& um = u.at(d, pi);
       for_each_cell(faces_of(g.patches[pi], d), [&](int i, int j, int k) {
         const IntVec3 R(i, j, k), L = R - e;
         double theta_face = 0;
-        for (std::size_t s : solids) {
-          const IceMaterialFields& fs = mats_[s];
-          const double FM = lag_mass_flux_[s].at(d, pi)(R);
-          if (FM == 0.0) continue;
-          const double Fv = FM * (FM > 0 ? fs.sp_vol_CC[pi](L) : fs.sp_vol_CC[pi](R)) * inv_V;
-          const double phi = fs.vel_FCME.at(d, pi)(R) * dt_dx;  // signed
-          // The face fraction of a flux against the face velocity is 0 (a
-          // round-off flux at the end of a row); a face whose solid face
-          // velocity is ~0 (the fluids locked to it hardly cross it) takes
-          // the mean of the two cells' solid fractions.
-          const double t = std::abs(phi) > 1e-14 ? Fv / phi : 0.5 * (fs.vol_frac_CC[pi](L) + fs.vol_frac_CC[pi](R));
-          theta_face += std::clamp(t, 0.0, 1.0);
-        }
+        for (std::size_t s : solids) theta_face += solid_face_fraction(s, d, pi, R, dt).theta;
         theta_face = std::min(theta_face, 1.0);
         const IntVec3 D = um(R) > 0 ? L : R;
         double fluid = 0;

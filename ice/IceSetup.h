@@ -108,6 +108,9 @@ struct IceSetup {
   double reference_pressure = 101325.0;  // read and kept; the ideal gas does not use it
   // Exchange coefficients K_mn, H_mn (symmetric, zero diagonal), n x n row-major.
   std::vector<double> K, H;
+  // <heatExchangeCoeff> variable: H per cell from the Lagrangian masses
+  // (variable_heat_coefficients, ice/Exchange.h) instead of the deck's <heat>.
+  bool variable_heat_exchange = false;
   // <ClampSpecificVolume>: M v_L >= tiny_rho rho_0 V v after the Lagrangian
   // specific volume (Uintah's clamp, used with the JWL++ decks).
   bool clamp_sp_vol = false;

@@ -435,9 +435,16 @@ void IceComponent::lagrangian_values_and_exchange(double dt) {
           vel_m[m] = row_ptr(vel_L_[m][pi], i0, j, k);
           temp_m[m] = row_ptr(temp_L_[m][pi], i0, j, k);
         }
+        const double* H = setup_.H.data();
+        double H_cell[kMaxExchangeMaterials * kMaxExchangeMaterials], mass_cell[kMaxExchangeMaterials];
         for (int c = 0; c < n; ++c) {
           double inv_cv[kMaxExchangeMaterials];
           for (std::size_t m = 0; m < nm; ++m) inv_cv[m] = 1.0 / cv_m[m][c];
+          if (setup_.variable_heat_exchange) {  // <heatExchangeCoeff> variable (Exchange.h)
+            for (std::size_t m = 0; m < nm; ++m) mass_cell[m] = mass_L_[m][pi](i0 + c, j, k);
+            variable_heat_coefficients({mass_cell, nm}, H_cell);
+            H = H_cell;
+          }
           double theta[kMaxExchangeMaterials], sv[kMaxExchangeMaterials], ux[kMaxExchangeMaterials],
               uy[kMaxExchangeMaterials], uz[kMaxExchangeMaterials], T[kMaxExchangeMaterials];
           for (std::size_t m = 0; m < nm; ++m) {
@@ -450,7 +457,7 @@ void IceComponent::lagrangian_values_and_exchange(double dt) {
             T[m] = temp_m[m][c];
           }
           solve_exchange3(dt, {theta, nm}, {sv, nm}, setup_.K, {ux, nm}, {uy, nm}, {uz, nm});
-          solve_exchange(dt, {theta, nm}, {sv, nm}, {inv_cv, nm}, setup_.H, {T, nm});
+          solve_exchange(dt, {theta, nm}, {sv, nm}, {inv_cv, nm}, {H, nm * nm}, {T, nm});
           for (std::size_t m = 0; m < nm; ++m) {
             vel_m[m][c] = Vec3(ux[m], uy[m], uz[m]);
             temp_m[m][c] = T[m];

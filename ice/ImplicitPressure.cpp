@@ -9,10 +9,12 @@
 // (the advection operator of the explicit step), the volume balance is
 //   R(p) = sum_m theta_m kappa_m (p - p_eq) - sum_m A_m(u_f(p)) = 0.
 // The face velocity (eq. 26.1 with p instead of p_eq) changes with a
-// correction dp as u_f -> u_f - dt v_f (dp_R - dp_L)/dx_d, so the flux
-// theta_f u_f dt/dx_d changes by -a_f (dp_R - dp_L) with
-//   a_f = sum_m theta_f,m v_f,m dt^2/dx_d^2,
-//   theta_f = (theta_L + theta_R)/2,  v_f = 2 v_L v_R/(v_L + v_R).
+// correction dp as u_f -> u_f - dt v_f (dp_R - dp_L)/dx_d (after the face
+// exchange: v_f -> svFC = E^-1 v_f), so the flux theta_f u_f dt/dx_d changes
+// by -a_f (dp_R - dp_L) with
+//   a_f = sum_m theta_f,m svFC_m dt^2/dx_d^2,
+//   theta_f = (theta_L + theta_R)/2,  v_f = 2 v_L v_R/(v_L + v_R)
+// (ImplicitPressureMatrix.cpp, also for MPMICE's solids).
 // Source models (Uintah's setupRHS, impICE.cc): the mass a model adds in a
 // cell, S_M,m, arrives at the micro specific volume v_m of its material and
 // must be squeezed into the cell as well, so the balance gains the term
@@ -25,7 +27,9 @@
 // the same split the explicit step makes (eq. 26.2), and p >= 1e-12 Pa (Uintah's clamp).
 // Newton-like outer iterations solve the symmetric positive definite system
 //   (sum theta kappa + sum_faces a_f) dp_C - sum_faces a_f dp_nb = -R(p)
-// (the matrix neglects the exchange and the upwind switch of the flux; the
+// (a_f with the face exchange in it, as Uintah's sp_vol_FC, and, in MPMICE,
+// the fluids' flux through the area the solids leave:
+// ImplicitPressureMatrix.cpp; it neglects the upwind switch of the flux; the
 // outer iterations carry the exact residual), p <- p + dp, until
 // max |R| < outer_iteration_tolerance. R is a volume fraction, so the
 // tolerance is dimensionless (as Uintah's max_RHS).
@@ -92,53 +96,6 @@ void IceComponent::advance_with_restarts(double dt, int step, int depth) {
   time_ = t0;
 }
 
-// Matrix of the correction equation (comment at the top); depends on theta,
-// v and kappa of the equilibration, fixed over the outer iterations.
-void IceComponent::assemble_pressure_matrix(double dt) {
-  const Grid& g = setup_.grid;
-  const std::size_t nm = mats_.size();
-  for (std::size_t pi = 0; pi < g.patches.size(); ++pi) {
-    const Patch& patch = g.patches[pi];
-    for_each_cell(patch.cells(), [&](int i, int j, int k) {
-      const IntVec3 C(i, j, k);
-      double centre = 0;
-      for (std::size_t m = 0; m < nm; ++m) {
-        const IceMaterialFields& f = mats_[m];
-        const double c = f.speedSound_CC[pi](C);
-        centre += f.vol_frac_CC[pi](C) * f.sp_vol_CC[pi](C) / (c * c);
-      }
-      for (int d = 0; d < 3; ++d) {
-        const double r2 = dt * dt / (g.dx[d] * g.dx[d]);
-        for (int side = 0; side < 2; ++side) {
-          const IntVec3 N = side == 0 ? IntVec3(C - IntVec3::Unit(d)) : IntVec3(C + IntVec3::Unit(d));
-          const int entry = 1 + 2 * d + side;  // kWest, kEast, ...
-          const bool boundary = !g.periodic[d] && (N[d] < 0 || N[d] >= g.cells[d]);
-          const int face = 2 * d + side;      // GridFace order x-, x+, y-, ...
-          double a = 0;
-          for (std::size_t m = 0; m < nm; ++m) {
-            if (boundary) {
-              const BCKind vk = setup_.bcs[m][face][kBcVelocity].kind;
-              if (vk == BCKind::Dirichlet || vk == BCKind::Symmetry) continue;  // face velocity fixed
-            }
-            const IceMaterialFields& f = mats_[m];
-            const double theta_f = 0.5 * (f.vol_frac_CC[pi](C) + f.vol_frac_CC[pi](N));
-            const double vC = f.sp_vol_CC[pi](C), vN = f.sp_vol_CC[pi](N);
-            a += theta_f * 2.0 * vC * vN / (vC + vN) * r2;
-          }
-          if (boundary) {
-            stencil_[entry][pi](C) = 0.0;
-            if (setup_.bcs[0][face][kBcPressure].kind == BCKind::Dirichlet) centre += a;
-          } else {
-            stencil_[entry][pi](C) = -a;
-            centre += a;
-          }
-        }
-      }
-      stencil_[kCenter][pi](C) = centre;
-    });
-  }
-}
-
 // rhs = -R(p) = sum_m A_m(u_f(p)) + term1 - sum theta kappa (p - p_eq); returns max |rhs|.
 double IceComponent::pressure_residual(double dt) {
   const Grid& g = setup_.grid;
@@ -150,16 +107,39 @@ double IceComponent::pressure_residual(double dt) {
       const double r = delP_Dilatate_[pi](i, j, k) + term1 -
                        sum_kappa_[pi](i, j, k) * (press_CC_[pi](i, j, k) - press_equil_CC_[pi](i, j, k));
       rhs_[pi](i, j, k) = r;
-      max_rhs = std::max(max_rhs, std::abs(r));
+      if (std::abs(r) > max_rhs) {
+        max_rhs = std::abs(r);
+        max_rhs_cell_ = IntVec3(i, j, k);
+      }
     });
   return max_rhs;
+}
+
+// Where the largest residual of this process sits: its cell, and the volume
+// fractions there (the why of a stalled outer iteration).
+std::string IceComponent::residual_where() const {
+  const IntVec3& c = max_rhs_cell_;
+  std::ostringstream os;
+  os << " in cell (" << c[0] << "," << c[1] << "," << c[2] << ") of this process; theta";
+  const Grid& g = setup_.grid;
+  for (std::size_t pi = 0; pi < g.patches.size(); ++pi)
+    if (g.patches[pi].cells().contains(c)) {
+      for (const IceMaterialFields& f : mats_) os << " " << f.vol_frac_CC[pi](c);
+      os << ", p " << press_CC_[pi](c) << " Pa, p_eq " << press_equil_CC_[pi](c) << " Pa";
+    }
+  return os.str();
 }
 
 void IceComponent::implicit_pressure_solve(double dt, int step) {
   const Grid& g = setup_.grid;
   const ImplicitSettings& im = setup_.implicit;
   for (std::size_t pi = 0; pi < g.patches.size(); ++pi) press_CC_[pi] = press_equil_CC_[pi];
-  assemble_pressure_matrix(dt);
+  // ICE alone the matrix depends on theta, v, K (fixed over the outer
+  // iterations); with MPMICE solids it depends on the face velocities of the
+  // iterate too (ImplicitPressureMatrix.cpp) and is rebuilt every iteration.
+  bool coupled = false;
+  for (std::size_t m = 0; m < mats_.size(); ++m) coupled = coupled || has_lagrangian_flux(m);
+  if (!coupled) assemble_pressure_matrix(dt);
   int it = 0;
   double max_rhs = 0;
   for (;; ++it) {
@@ -171,12 +151,16 @@ void IceComponent::implicit_pressure_solve(double dt, int step) {
       std::ostringstream os;
       os << "ICE implicit pressure at step " << step << ": no convergence in " << im.max_outer_iterations
          << " outer iterations (max |residual| = " << max_rhs << " > outer_iteration_tolerance = "
-         << im.outer_iteration_tolerance << ")";
+         << im.outer_iteration_tolerance << residual_where() << ")";
       throw NumericalFailure(os.str());
     }
-    if (it >= im.iters_before_timestep_restart)
-      throw StepRestart{"more than iters_before_timestep_restart = " + std::to_string(im.iters_before_timestep_restart) +
-                        " outer iterations"};
+    if (it >= im.iters_before_timestep_restart) {
+      std::ostringstream os;
+      os << "more than iters_before_timestep_restart = " << im.iters_before_timestep_restart
+         << " outer iterations (max |residual| = " << max_rhs << residual_where() << ")";
+      throw StepRestart{os.str()};
+    }
+    if (coupled) assemble_pressure_matrix(dt);
     const LinearSolveResult r = pressure_solver_->solve(stencil_, rhs_, delta_p_);
     if (!r.converged) {
       std::ostringstream os;

@@ -100,10 +100,6 @@ std::unique_ptr<MpmIceComponent> make_mpmice_component(const Deck& deck) {
     solids.push_back(std::move(spec));
   }
   IceSetup s = read_ice_setup(deck, std::move(solids), mpmice_burn_model_factories());
-  if (s.implicit.enabled)
-    root.require_child("CFD").require_child("ICE").missing_feature(
-        "<ImplicitSolver> in MPMICE (explicit pressure only so far; the coupled implicit solve was tried: its outer "
-        "iterations stall with moving solids, docs/mpmice.md)");
   check_models_in_mpmice(root, s, ms);
   if (s.lodi.enabled) root.require_child("Grid").missing_feature("LODI boundary conditions in MPMICE");
   auto ice = std::make_unique<IceComponent>(std::move(s));

@@ -91,5 +91,34 @@ TEST(IceExchange, StiffLimitGivesTheMassWeightedVelocity) {
   EXPECT_NEAR(ux[0], 0.0, 1e-12);
 }
 
+// <heatExchangeCoeff> variable: Uintah's ExchangeCoefficients::
+// getVariableExchangeCoeff, branch by branch in the squared mass ratio
+// r^2 = (M_n/M_m)^2: < 1e-12 -> 1e12; [1e-12, 1e-5) -> 1/r^2; [1e-5, 1e5) ->
+// 1e5; [1e5, 1e12) -> r^2; >= 1e12 -> 1e12. Symmetric, zero diagonal.
+TEST(IceExchange, VariableHeatCoefficientsFollowUintahsBranches) {
+  struct Case {
+    double m1, expected;
+  } cases[] = {{1e-7, 1e12},  {1e-6, 1e12},  {1e-4, 1e8},   {1.0 / 300.0, 1e5},
+               {1.0, 1e5},    {100.0, 1e5},  {1e3, 1e6},    {1e5, 1e10},
+               {1e6, 1e12},   {1e8, 1e12}};
+  for (const Case& c : cases) {
+    const double mass[2] = {1.0, c.m1};
+    double H[4];
+    variable_heat_coefficients(mass, H);
+    EXPECT_EQ(H[0], 0.0);
+    EXPECT_EQ(H[3], 0.0);
+    EXPECT_EQ(H[1], H[2]);
+    EXPECT_NEAR(H[1], c.expected, 1e-12 * c.expected) << "M1/M0 = " << c.m1;
+  }
+  // Three materials: every pair by its own ratio.
+  const double mass[3] = {2.0, 2e-3, 2e4};
+  double H[9];
+  variable_heat_coefficients(mass, H);
+  EXPECT_NEAR(H[0 * 3 + 1], 1e6, 1e-6);   // r = 1e-3: 1/r^2
+  EXPECT_NEAR(H[0 * 3 + 2], 1e8, 1e-4);   // r = 1e4: r^2
+  EXPECT_NEAR(H[1 * 3 + 2], 1e12, 1e-2);  // r = 1e7: clamp
+  EXPECT_EQ(H[2 * 3 + 1], H[1 * 3 + 2]);
+}
+
 }  // namespace
 }  // namespace tephra
