@@ -21,6 +21,9 @@ MpmIceComponent::MpmIceComponent(std::unique_ptr<MpmComponent> mpm, std::unique_
 // geom_objects, and the equilibration pressure over all materials.
 void MpmIceComponent::initialize() {
   mpm_->initialize();
+  // Under mpirun ICE takes MPM's patch owners, so that every particle of a
+  // rank lies in the rank's own cells (docs/parallel.md "MPMICE on ranks").
+  ice_->adopt_layout(mpm_->layout());
   ice_->initialize();
   particle_pressure_.assign(mpm_->materials().size(), {});
   for (std::size_t s = 0; s < particle_pressure_.size(); ++s)
@@ -85,7 +88,7 @@ void MpmIceComponent::fill_output(const std::set<std::string>& labels, OutputFra
       g.data.label = "g.temperature";
       g.data.material = mpm_->materials()[s].index;
       g.data.components = 1;
-      g.data.values = node_temperature_[s];
+      g.data.values = mpm_->whole_node_array(node_temperature_[s], 1);  // from the rank boxes under mpirun
       frame.grid_fields.push_back(std::move(g));
     }
 }

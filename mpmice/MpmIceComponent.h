@@ -34,6 +34,9 @@ class MpmIceComponent final : public Component, private MpmCoupling, private Sol
   void save_state(StateArchive& archive) const override;
   void load_state(const StateArchive& archive) override;
 
+  // MPI ranks: keep every patch in this process (the 1-rank reference of the
+  // MPI tests), before initialize(); MPM's layout is then ICE's too.
+  void keep_whole_level() { mpm_->keep_whole_level(); }
   const MpmComponent& mpm() const { return *mpm_; }
   const IceComponent& ice() const { return *ice_; }
   // Particle pressure p_p - p_ref of MPM material m from the last step (step 7).
@@ -55,6 +58,9 @@ class MpmIceComponent final : public Component, private MpmCoupling, private Sol
   void corner_masses(std::size_t s, const IntVec3& c, double wm[8]) const override;
   void burn_particles(std::size_t s, const CellScalars& dm, BurnedCells& out) override;
   void particles_per_cell(std::size_t s, CellScalars& out) const override;
+  // MPI ranks: burned cell shares of other ranks' cells to their owners (ParticleBurn.cpp).
+  void send_burned_shares(const std::vector<int>& patch_of, std::vector<double>& mass, std::vector<Vec3>& momentum,
+                          std::vector<double>& energy) const;
 
   std::unique_ptr<MpmComponent> mpm_;
   std::unique_ptr<IceComponent> ice_;
