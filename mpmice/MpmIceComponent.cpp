@@ -25,6 +25,7 @@ void MpmIceComponent::initialize() {
   // rank lies in the rank's own cells (docs/parallel.md "MPMICE on ranks").
   ice_->adopt_layout(mpm_->layout());
   ice_->initialize();
+  initialized_ = true;
   particle_pressure_.assign(mpm_->materials().size(), {});
   for (std::size_t s = 0; s < particle_pressure_.size(); ++s)
     particle_pressure_[s].assign(mpm_->materials()[s].particles.size(), 0.0);
@@ -122,7 +123,11 @@ void MpmIceComponent::save_state(StateArchive& archive) const {
   ice_->save_state(archive);
 }
 
+// A restart on a fresh component (tephra --restart) first initializes both
+// parts together (MPM's layout to ICE, the solids' cell state from the
+// particles): ICE's own load_state would otherwise initialize ICE alone.
 void MpmIceComponent::load_state(const StateArchive& archive) {
+  if (!initialized_) initialize();
   mpm_->load_state(archive);
   ice_->load_state(archive);
 }

@@ -65,6 +65,7 @@ class MpmIceComponent final : public Component, private MpmCoupling, private Sol
   std::unique_ptr<MpmComponent> mpm_;
   std::unique_ptr<IceComponent> ice_;
   double p_ref_;
+  bool initialized_ = false;
   std::vector<std::vector<double>> particle_pressure_;  // per MPM material: p_p - p_ref
   Particles flux_particles_;  // scratch of solid_mass_fluxes
   NodeGrid flux_grid_;
