@@ -66,6 +66,13 @@ class IceComponent final : public Component {
   // Fills the ghost cells of material m's state (rho_CC, vel_CC, temp_CC,
   // sp_vol_CC) from the owning patches: MPMICE after writing a solid's cell state.
   void exchange_cell_state(std::size_t m);
+  // MPMICE on MPI ranks (mpmice/MpmIceRanks.cpp): before initialize(), take
+  // the MPM component's patch owners (cost: cells + particles) so that a
+  // rank's particles lie in its own cells; and fill the ghost cells of a
+  // cell field over the own patches from their owners (ice/IceRanks.cpp).
+  void adopt_layout(const PatchLayout& layout);
+  void exchange_halo(CellScalars& f) { halo_->exchange(f); }
+  void exchange_halo(CellVectors& f) { halo_->exchange(f); }
   // Steps 2-6 of the coupled order: equilibration pressure, face velocities
   // and their exchange, model sources (mass conversion, step 4), pressure
   // increment, face pressure.

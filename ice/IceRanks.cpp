@@ -14,6 +14,7 @@
 // sums per patch (ice/models/PatchSums.h), added in patch order over the
 // ranks (IceComponent::model_reductions).
 #include <memory>
+#include <stdexcept>
 
 #include "core/base/Errors.h"
 #include "core/grid/MpiHaloExchange.h"
@@ -27,7 +28,8 @@ void IceComponent::lay_out_patches() {
     layout_ = keep_whole_level_ ? PatchLayout::whole(setup_.grid) : PatchLayout::over_world_ranks(setup_.grid);
     if (layout_.distributed) {
       for (const IceMaterialSpec& m : setup_.materials)
-        if (m.lagrangian) throw MissingFeature({}, "MPMICE on more than one MPI rank (issue 7)");
+        if (m.lagrangian)  // MPMICE hands its MPM layout over first (adopt_layout)
+          throw std::logic_error("IceComponent: lagrangian materials on ranks without the MPM layout");
       setup_.grid = layout_.own_grid();
     }
   }
@@ -35,6 +37,15 @@ void IceComponent::lay_out_patches() {
     halo_ = std::make_unique<MpiHaloExchange>(layout_.level, layout_.owner);
   else
     halo_ = std::make_unique<LocalHaloExchange>(setup_.grid);
+}
+
+void IceComponent::adopt_layout(const PatchLayout& layout) {
+  if (laid_out_) throw std::logic_error("IceComponent::adopt_layout after the patches were laid out");
+  if (layout.level.patches.size() != setup_.grid.patches.size())
+    throw std::logic_error("IceComponent::adopt_layout: another level");
+  laid_out_ = true;
+  layout_ = layout;
+  if (layout_.distributed) setup_.grid = layout_.own_grid();
 }
 
 // Every rank throws when any rank finds a bad cell, so that none waits in the

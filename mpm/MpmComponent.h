@@ -119,6 +119,14 @@ class MpmComponent final : public Component {
   // 1-rank reference inside an MPI test).
   void keep_whole_level() { keep_whole_level_ = true; }
   const PatchLayout& layout() const { return layout_; }
+  // Node arrays (NodeGrid index order, full grid) summed over the ranks
+  // whose node boxes hold the node (mpm/RankNodeSums.h; no-ops in one
+  // process): MPMICE's own node scatters (T_g, burn sums, pressure force).
+  void sum_node_vectors(std::vector<Vec3>& v);
+  void sum_node_doubles(std::vector<double>& v);
+  // A whole-grid copy of a node array (width doubles per node) on every rank
+  // (RankNodeSums::whole; a collective; `data` itself in one process).
+  std::vector<double> whole_node_array(const std::vector<double>& data, int width) const;
 
  private:
   double material_stable_timestep(const MpmMaterial& m) const;
@@ -161,8 +169,6 @@ class MpmComponent final : public Component {
   void size_step_columns(MpmMaterial& m);  // L, F_old, plastic_work, heating to the particle count
   void set_node_boxes();                   // this step's node boxes of all ranks (a collective)
   void sum_particles_to_grid(NodeGrid& g); // P2G arrays over the ranks (mpm/RankNodeSums.h)
-  void sum_node_vectors(std::vector<Vec3>& v);
-  void sum_node_doubles(std::vector<double>& v);
   double sum_over_ranks(double local) const;  // in rank order, the same bits on every rank
   void migrate_particles();                // particles to the ranks owning their new patches
   PatchLayout layout_;

@@ -82,7 +82,6 @@ void MpmComponent::check_rank_support() const {
     throw MissingFeature({}, "MPM with " + what + " on more than one MPI rank (issue 7: explicit MPM with the "
                                  "grid BCs, gravity and contact runs on ranks)");
   };
-  if (coupling_) no("MPMICE coupling");
   if (periodic_.active()) no("periodic boundaries");
   if (setup_.flags.axisymmetric) no("<axisymmetric>");
   if (!setup_.loads.empty()) no("<PhysicalBC><MPM> loads");
@@ -159,11 +158,31 @@ void MpmComponent::set_node_boxes() {
     }
   }
   NodeBox box;
+  const bool particles = lo[0] <= hi[0] && lo[1] <= hi[1] && lo[2] <= hi[2];
   for (int d = 0; d < 3; ++d) {
-    if (!(lo[d] <= hi[d])) return node_sums_.set_boxes(NodeBox{}, g.n);  // no particles
+    if (!particles) break;  // no particles: an empty box (unless MPMICE adds its cells below)
     box.lo[d] = std::clamp(int(std::floor(lo[d])) - 3, 0, g.n[d]);
     box.hi[d] = std::clamp(int(std::floor(hi[d])) + 4, 0, g.n[d]);
   }
+  // MPMICE: the nodes of the own patches' cells (with their extra cells) and
+  // one node more on each side, whatever the particles: the coupled step
+  // projects the nodes around each own cell to it (step 1, the burn's corner
+  // masses, the face mass fluxes) and computes the cell -> node averages at
+  // the nodes of its own cells (steps 7 and 13, mpmice/MpmIceRanks.cpp), so
+  // those nodes must hold the sums of every rank.
+  if (coupling_)
+    for (int p : layout_.own) {
+      const IndexRange cells = layout_.level.patches[std::size_t(p)].cells_with_extra();
+      NodeBox own;
+      for (int d = 0; d < 3; ++d) {
+        const int off = int(std::lround((layout_.level.lower[d] - g.origin[d]) / g.h[d]));
+        own.lo[d] = std::clamp(cells.lo[d] + off - 1, 0, g.n[d]);
+        own.hi[d] = std::clamp(cells.hi[d] + off + 2, 0, g.n[d]);
+      }
+      if (own.empty()) continue;
+      if (box.empty()) box = own;
+      else box = NodeBox{box.lo.cwiseMin(own.lo), box.hi.cwiseMax(own.hi)};
+    }
   node_sums_.set_boxes(box, g.n);
 }
 
@@ -186,6 +205,11 @@ void MpmComponent::sum_node_vectors(std::vector<Vec3>& v) {
 void MpmComponent::sum_node_doubles(std::vector<double>& v) {
   if (!layout_.distributed || v.empty()) return;
   node_sums_.combine({{v.data(), 1, -1}});
+}
+
+std::vector<double> MpmComponent::whole_node_array(const std::vector<double>& data, int width) const {
+  if (!layout_.distributed) return data;
+  return node_sums_.whole(data.data(), width);
 }
 
 double MpmComponent::sum_over_ranks(double local) const {

@@ -21,7 +21,11 @@ MpmIceComponent::MpmIceComponent(std::unique_ptr<MpmComponent> mpm, std::unique_
 // geom_objects, and the equilibration pressure over all materials.
 void MpmIceComponent::initialize() {
   mpm_->initialize();
+  // Under mpirun ICE takes MPM's patch owners, so that every particle of a
+  // rank lies in the rank's own cells (docs/parallel.md "MPMICE on ranks").
+  ice_->adopt_layout(mpm_->layout());
   ice_->initialize();
+  initialized_ = true;
   particle_pressure_.assign(mpm_->materials().size(), {});
   for (std::size_t s = 0; s < particle_pressure_.size(); ++s)
     particle_pressure_[s].assign(mpm_->materials()[s].particles.size(), 0.0);
@@ -85,7 +89,7 @@ void MpmIceComponent::fill_output(const std::set<std::string>& labels, OutputFra
       g.data.label = "g.temperature";
       g.data.material = mpm_->materials()[s].index;
       g.data.components = 1;
-      g.data.values = node_temperature_[s];
+      g.data.values = mpm_->whole_node_array(node_temperature_[s], 1);  // from the rank boxes under mpirun
       frame.grid_fields.push_back(std::move(g));
     }
 }
@@ -119,7 +123,11 @@ void MpmIceComponent::save_state(StateArchive& archive) const {
   ice_->save_state(archive);
 }
 
+// A restart on a fresh component (tephra --restart) first initializes both
+// parts together (MPM's layout to ICE, the solids' cell state from the
+// particles): ICE's own load_state would otherwise initialize ICE alone.
 void MpmIceComponent::load_state(const StateArchive& archive) {
+  if (!initialized_) initialize();
   mpm_->load_state(archive);
   ice_->load_state(archive);
 }

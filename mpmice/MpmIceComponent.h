@@ -34,6 +34,9 @@ class MpmIceComponent final : public Component, private MpmCoupling, private Sol
   void save_state(StateArchive& archive) const override;
   void load_state(const StateArchive& archive) override;
 
+  // MPI ranks: keep every patch in this process (the 1-rank reference of the
+  // MPI tests), before initialize(); MPM's layout is then ICE's too.
+  void keep_whole_level() { mpm_->keep_whole_level(); }
   const MpmComponent& mpm() const { return *mpm_; }
   const IceComponent& ice() const { return *ice_; }
   // Particle pressure p_p - p_ref of MPM material m from the last step (step 7).
@@ -56,10 +59,14 @@ class MpmIceComponent final : public Component, private MpmCoupling, private Sol
   void burn_particles(std::size_t s, const CellScalars& dm, BurnedCells& out) override;
   void particles_per_cell(std::size_t s, CellScalars& out) const override;
   bool particle_history_max(std::size_t s, const std::string& name, CellScalars& out) const override;
+  // MPI ranks: burned cell shares of other ranks' cells to their owners (ParticleBurn.cpp).
+  void send_burned_shares(const std::vector<int>& patch_of, std::vector<double>& mass, std::vector<Vec3>& momentum,
+                          std::vector<double>& energy) const;
 
   std::unique_ptr<MpmComponent> mpm_;
   std::unique_ptr<IceComponent> ice_;
   double p_ref_;
+  bool initialized_ = false;
   std::vector<std::vector<double>> particle_pressure_;  // per MPM material: p_p - p_ref
   Particles flux_particles_;  // scratch of solid_mass_fluxes
   NodeGrid flux_grid_;

@@ -13,61 +13,12 @@
 #include "core/grid/Loop.h"
 #include "mpmice/CellProjection.h"
 #include "mpmice/MpmIceComponent.h"
+#include "mpmice/NodeAverages.h"
 #include "mpm/shape/AxisStencils.h"
 
 namespace tephra {
 
 namespace {
-
-// A cell field of all patches gathered into one array over the grid's
-// cells with extra cells (each cell from the patch whose cells with extra
-// cells hold it: the patches tile the grid), so that a node average reads
-// its 8 cells by index instead of searching the patches for each.
-template <class T>
-struct FlatCells {
-  const PatchFields<CellField<T>>& f;
-  IndexRange r;
-  IntVec3 n;
-  std::vector<T> v;
-  std::vector<char> held;  // a patch of this rank holds the cell
-  T zero;                  // the start of a node sum (f at patch 0's first cell times 0)
-
-  FlatCells(const Grid& g, const PatchFields<CellField<T>>& fields)
-      : f(fields), r(g.cells_with_extra()), n(r.hi - r.lo), zero(fields[0](g.patches[0].lo) * 0.0) {
-    const std::size_t count = std::size_t(n[0]) * n[1] * n[2];
-    v.resize(count);
-    held.assign(count, 0);
-    for (std::size_t pi = 0; pi < g.patches.size(); ++pi)
-      for_each_cell_serial(g.patches[pi].cells_with_extra(), [&](int i, int j, int k) {
-        const std::size_t idx = index(IntVec3(i, j, k));
-        if (held[idx]) return;  // the first patch holding c, as a search in patch order finds
-        v[idx] = f[pi](i, j, k);
-        held[idx] = 1;
-      });
-  }
-  std::size_t index(const IntVec3& c) const {
-    const IntVec3 a = c - r.lo;
-    return std::size_t(a[0]) + std::size_t(n[0]) * (std::size_t(a[1]) + std::size_t(n[1]) * a[2]);
-  }
-  // The value at cell c, c clamped into [lo, hi) first (zero-gradient
-  // extension for nodes on the outer layer).
-  const T& at(IntVec3 c, const IndexRange& clamp) const {
-    for (int d = 0; d < 3; ++d) c[d] = std::clamp(c[d], clamp.lo[d], clamp.hi[d] - 1);
-    const std::size_t idx = index(c);
-    return held[idx] ? v[idx] : f[0](c);
-  }
-};
-
-// 1/8 sum over the 8 cells that share node n.
-template <class T>
-T node_average(const FlatCells<T>& f, const IntVec3& node_as_cell, const IndexRange& clamp) {
-  T s = f.zero;
-  for (int c = 0; c < 8; ++c) {
-    const IntVec3 cell = node_as_cell - IntVec3(c & 1, (c >> 1) & 1, (c >> 2) & 1);
-    s += 0.125 * f.at(cell, clamp);
-  }
-  return s;
-}
 
 // node_cell_weight (CellProjection.h) of every node of ng: the weight and
 // which symmetry planes the node lies on (bit d: normal to d).
@@ -112,6 +63,7 @@ void MpmIceComponent::solid_state_to_cells() {
       for (std::size_t i = 0; i < p.size(); ++i)
         view.weights(i, [&](std::size_t gi, double w) { mT[gi] += p.mass[i] * p.temperature[i] * w; });
     });
+    mpm_->sum_node_doubles(mT);  // over the MPI ranks (no-op in one process)
     // T_g = sum m_p T_p S_gp / m_g, kept for output (g.temperature).
     node_temperature_.resize(mpm_->materials().size());
     node_temperature_[s].assign(ng.count(), 0.0);
@@ -198,28 +150,22 @@ void MpmIceComponent::pressure_to_particles() {
   const Grid& g = ice_->grid();
   const IndexRange all = g.cells_with_extra();
   particle_pressure_.resize(mpm_->materials().size());
-  const FlatCells<double> press(g, ice_->press_CC());
   for (std::size_t s = 0; s < mpm_->materials().size(); ++s) {
     const MpmMaterial& mm = mpm_->materials()[s];
     const NodeGrid& ng = mm.grid;
     const IntVec3 off = node_offset(g, ng);
+    // p_g at the nodes of the own patches (press_CC's ghosts are filled by
+    // the pressure phase), then over the ranks (mpmice/NodeAverages.h).
     std::vector<double> pN(ng.count(), 0.0);
-    std::vector<char> done(ng.count(), 0);
+    own_node_averages(g, ice_->press_CC(), ng, off, all, [](std::size_t) { return true; }, pN);
+    mpm_->sum_node_doubles(pN);
     const Stencils& st = mm.stencils;
     std::vector<double>& pp = particle_pressure_[s];
     pp.assign(mm.particles.size(), 0.0);
     visit_stencils(st, [&](const auto& view) {
       for (std::size_t i = 0; i < mm.particles.size(); ++i) {
         double sum = 0;
-        view.weights(i, [&](std::size_t gi, double w) {
-          if (!done[gi]) {
-            const std::size_t nx = std::size_t(ng.n[0]), ny = std::size_t(ng.n[1]);
-            const IntVec3 node(int(gi % nx), int((gi / nx) % ny), int(gi / (nx * ny)));
-            pN[gi] = node_average(press, node - off, all);
-            done[gi] = 1;
-          }
-          sum += w * pN[gi];
-        });
+        view.weights(i, [&](std::size_t gi, double w) { sum += w * pN[gi]; });
         pp[i] = sum - p_ref_;
       }
     });
@@ -229,16 +175,25 @@ void MpmIceComponent::pressure_to_particles() {
 // f_int,g -= V_p p_p grad S_gp (Uintah's computeInternalForce with ICE: the
 // stress sigma_p + p_p I).
 void MpmIceComponent::add_internal_forces() {
+  const bool ranks = mpm_->layout().distributed;
   for (std::size_t s = 0; s < mpm_->materials().size(); ++s) {
     MpmMaterial& mm = mpm_->materials()[s];
     const Stencils& st = mm.stencils;
     const std::vector<double>& pp = particle_pressure_[s];
+    // On MPI ranks MPM has summed f_int,g over the ranks already: the
+    // pressure term is scattered apart, summed over the ranks, then added.
+    std::vector<Vec3> rank_sum;
+    if (ranks) rank_sum.assign(mm.grid.count(), Vec3::Zero());
+    std::vector<Vec3>& f = ranks ? rank_sum : mm.grid.internal_force;
     visit_stencils(st, [&](const auto& view) {
       for (std::size_t i = 0; i < mm.particles.size(); ++i) {
         const double vp = mm.particles.volume[i] * pp[i];
-        view.entries(i, [&](std::size_t gi, double, const Vec3& grad) { mm.grid.internal_force[gi] -= vp * grad; });
+        view.entries(i, [&](std::size_t gi, double, const Vec3& grad) { f[gi] -= vp * grad; });
       }
     });
+    if (!ranks) continue;
+    mpm_->sum_node_vectors(rank_sum);
+    for (std::size_t gi = 0; gi < rank_sum.size(); ++gi) mm.grid.internal_force[gi] += rank_sum[gi];
   }
 }
 
@@ -255,8 +210,8 @@ void MpmIceComponent::cell_changes_to_nodes_and_particles() {
   const Grid& g = ice_->grid();
   const IndexRange interior{IntVec3::Zero(), g.cells};
   const std::vector<IceMaterialFields>& fields = ice_->fields();
-  CellVectors du(g, 0);
-  CellScalars dT(g, 0);
+  CellVectors du(g, 1);
+  CellScalars dT(g, 1);
   for (std::size_t s = 0; s < mpm_->materials().size(); ++s) {
     const IceMaterialFields& f = fields[s];
     for (std::size_t pi = 0; pi < g.patches.size(); ++pi)
@@ -264,21 +219,20 @@ void MpmIceComponent::cell_changes_to_nodes_and_particles() {
         du[pi](i, j, k) = ice_->lagrangian_velocity(s)[pi](i, j, k) - f.vel_CC[pi](i, j, k);
         dT[pi](i, j, k) = ice_->lagrangian_temperature(s)[pi](i, j, k) - f.temp_CC[pi](i, j, k);
       });
+    ice_->exchange_halo(du);  // the first ghost layer of the node averages
+    ice_->exchange_halo(dT);
     MpmMaterial& mm = mpm_->materials()[s];
     NodeGrid& ng = mm.grid;
     const IntVec3 off = node_offset(g, ng);
+    auto solid = [&](std::size_t gi) { return ng.mass[gi] > 0.0; };
+    std::vector<Vec3> duN(ng.count(), Vec3::Zero());
     std::vector<double> dTN(ng.count(), 0.0);
-    const FlatCells<Vec3> duf(g, du);
-    const FlatCells<double> dTf(g, dT);
-    for (int k = 0; k < ng.n[2]; ++k)
-      for (int j = 0; j < ng.n[1]; ++j)
-        for (int i = 0; i < ng.n[0]; ++i) {
-          const std::size_t gi = ng.index(i, j, k);
-          if (!(ng.mass[gi] > 0.0)) continue;
-          const IntVec3 c = IntVec3(i, j, k) - off;
-          ng.velocity_star[gi] += node_average(duf, c, interior);
-          dTN[gi] = node_average(dTf, c, interior);
-        }
+    own_node_averages(g, du, ng, off, interior, solid, duN);
+    own_node_averages(g, dT, ng, off, interior, solid, dTN);
+    mpm_->sum_node_vectors(duN);  // over the MPI ranks (mpmice/NodeAverages.h)
+    mpm_->sum_node_doubles(dTN);
+    for (std::size_t gi = 0; gi < ng.count(); ++gi)
+      if (solid(gi)) ng.velocity_star[gi] += duN[gi];
     Particles& p = mm.particles;
     const Stencils& st = mm.stencils;
     visit_stencils(st, [&](const auto& view) {

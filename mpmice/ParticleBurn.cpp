@@ -30,9 +30,11 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <stdexcept>
 #include <vector>
 
 #include "core/grid/Loop.h"
+#include "core/parallel/Ranks.h"
 #include "mpm/SymmetryFold.h"
 #include "mpm/shape/AxisStencils.h"
 #include "mpmice/CellProjection.h"
@@ -58,7 +60,9 @@ void MpmIceComponent::particles_per_cell(std::size_t s, CellScalars& out) const 
   for (const Vec3& x : mpm_->materials()[s].particles.x) {
     IntVec3 c;
     for (int d = 0; d < 3; ++d) c[d] = int(std::floor((x[d] - g.lower[d]) / g.dx[d]));
-    if (const int pi = g.patch_owning_cell(c); pi >= 0) out[std::size_t(pi)](c) += 1.0;  // -1: outside the interior
+    const int level_patch = g.patch_owning_cell(c);  // a level index (-1: outside the interior)
+    for (std::size_t pi = 0; pi < g.patches.size(); ++pi)  // g: this rank's patches under mpirun
+      if (g.patches[pi].id == level_patch) out[pi](c) += 1.0;
   }
 }
 
@@ -75,7 +79,9 @@ bool MpmIceComponent::particle_history_max(std::size_t s, const std::string& nam
   for (std::size_t p = 0; p < mm.particles.size(); ++p) {
     IntVec3 c;
     for (int d = 0; d < 3; ++d) c[d] = int(std::floor((mm.particles.x[p][d] - g.lower[d]) / g.dx[d]));
-    if (const int pi = g.patch_owning_cell(c); pi >= 0) out[std::size_t(pi)](c) = std::max(out[std::size_t(pi)](c), col[p]);
+    const int level_patch = g.patch_owning_cell(c);  // a level index (-1: outside the interior)
+    for (std::size_t pi = 0; pi < g.patches.size(); ++pi)  // g: this rank's patches under mpirun
+      if (g.patches[pi].id == level_patch) out[pi](c) = std::max(out[pi](c), col[p]);
   }
   return true;
 }
@@ -99,7 +105,7 @@ void MpmIceComponent::burn_particles(std::size_t s, const CellScalars& dm, Burne
   const std::size_t ncell = std::size_t(nc[0]) * nc[1] * nc[2];
   auto flat = [&](const IntVec3& c) { return std::size_t(c[0]) + std::size_t(nc[0]) * (std::size_t(c[1]) + std::size_t(nc[1]) * c[2]); };
   std::vector<double> dmc(ncell, 0.0);
-  std::vector<int> patch_of(ncell, 0);
+  std::vector<int> patch_of(ncell, -1);  // own patch (index in g) of each interior cell; -1: another rank's
   bool any = false;
   for (std::size_t pi = 0; pi < g.patches.size(); ++pi)
     for_each_cell_serial(g.patches[pi].cells(), [&](int i, int j, int k) {
@@ -108,7 +114,7 @@ void MpmIceComponent::burn_particles(std::size_t s, const CellScalars& dm, Burne
       patch_of[flat(c)] = int(pi);
       any = any || dm[pi](c) > 0;
     });
-  if (!any) return;
+  if (!mpm_->layout().any(any)) return;  // every MPI rank takes the same branch (collectives below)
   // The interior cells that share node gi (up to 8), with the node's weight.
   auto for_node_cells = [&](std::size_t gi, auto&& fn) {
     const std::size_t nx = std::size_t(ng.n[0]), ny = std::size_t(ng.n[1]);
@@ -126,12 +132,24 @@ void MpmIceComponent::burn_particles(std::size_t s, const CellScalars& dm, Burne
     for (std::size_t i = 0; i < p.size(); ++i)
       view.weights(i, [&](std::size_t gi, double S) { m_unfolded[gi] += p.mass[i] * S; });
   });
-  std::vector<double> Mc(ncell, 0.0);
+  // MPI ranks: the node sums of every rank's particles, at the nodes of the
+  // rank's box (which holds its own cells' corners); no-ops in one process.
+  mpm_->sum_node_doubles(m_unfolded);  std::vector<double> Mc(ncell, 0.0);
   for (std::size_t gi = 0; gi < ng.count(); ++gi)
     if (m_unfolded[gi] > 0) for_node_cells(gi, [&](std::size_t c, double w) { Mc[c] += w * m_unfolded[gi]; });
   std::vector<double> f(ncell, 0.0);
   for (std::size_t c = 0; c < ncell; ++c)
     if (dmc[c] > 0 && Mc[c] > 0) f[c] = std::min(dmc[c] / Mc[c], 1.0);
+  // MPI ranks: f_c is computed by the rank owning c; a particle near a patch
+  // cut also burns in the other rank's cells, so every rank gets every
+  // burning cell's f_c (few: surface cells), then phi_n has one-process bits.
+  if (mpm_->layout().distributed) {
+    std::vector<double> mine;
+    for (std::size_t c = 0; c < ncell; ++c)
+      if (f[c] > 0) mine.insert(mine.end(), {double(c), f[c]});
+    const std::vector<double> all = all_gather(mine);
+    for (std::size_t k = 0; k + 2 <= all.size(); k += 2) f[std::size_t(all[k])] = all[k + 1];
+  }
   // phi_n = w_n sum_{c ∋ n} f_c.
   std::vector<double> phi(ng.count(), 0.0);
   for (std::size_t gi = 0; gi < ng.count(); ++gi)
@@ -180,6 +198,13 @@ void MpmIceComponent::burn_particles(std::size_t s, const CellScalars& dm, Burne
       p.volume0[i] *= ratio;
     }
   });
+  // MPI ranks: the removed sums of every rank's particles, and the shares of
+  // cells another rank owns sent to it.
+  mpm_->sum_node_doubles(d.mass);
+  mpm_->sum_node_vectors(d.velocity);
+  mpm_->sum_node_vectors(d.external_force);
+  mpm_->sum_node_doubles(d.volume);
+  if (mpm_->layout().distributed) send_burned_shares(patch_of, cell_mass, cell_mom, cell_energy);
   // Fold the removed sums as P2G folds its sums (symmetry planes), then take
   // them out of this step's node sums.
   for (std::size_t gi = 0; gi < d.count(); ++gi)
@@ -204,13 +229,45 @@ void MpmIceComponent::burn_particles(std::size_t s, const CellScalars& dm, Burne
   }
   mm.bcs.apply(ng, ng.velocity);
   for (std::size_t c = 0; c < ncell; ++c) {
-    if (!(cell_mass[c] > 0)) continue;
+    if (!(cell_mass[c] > 0) || patch_of[c] < 0) continue;
     const std::size_t pi = std::size_t(patch_of[c]);
     const IntVec3 cell(int(c % std::size_t(nc[0])), int((c / std::size_t(nc[0])) % std::size_t(nc[1])),
                        int(c / (std::size_t(nc[0]) * nc[1])));
     out.mass[pi](cell) = cell_mass[c];
     out.momentum[pi](cell) = cell_mom[c];
     out.energy[pi](cell) = cell_energy[c];
+  }
+}
+
+// The burned shares of interior cells this rank does not own (patch_of < 0),
+// flat index i + nx (j + ny k), go to the owning ranks (one all-to-all), which
+// add them to their own: records (cell, mass, momentum x3, energy).
+void MpmIceComponent::send_burned_shares(const std::vector<int>& patch_of, std::vector<double>& mass,
+                                         std::vector<Vec3>& momentum, std::vector<double>& energy) const {
+  const PatchLayout& layout = ice_->layout();
+  const IntVec3 nc = layout.level.cells;
+  const Ranks r = world_ranks();
+  std::vector<std::vector<double>> send(std::size_t(r.size));
+  for (std::size_t c = 0; c < mass.size(); ++c) {
+    if (patch_of[c] >= 0 || !(mass[c] > 0)) continue;
+    const IntVec3 cell(int(c % std::size_t(nc[0])), int((c / std::size_t(nc[0])) % std::size_t(nc[1])),
+                       int(c / (std::size_t(nc[0]) * nc[1])));
+    const int p = layout.level.patch_owning_cell(cell);
+    if (p < 0) throw std::logic_error("MPMICE burn: an interior cell without a patch");
+    std::vector<double>& b = send[std::size_t(layout.owner[std::size_t(p)])];
+    b.insert(b.end(), {double(c), mass[c], momentum[c][0], momentum[c][1], momentum[c][2], energy[c]});
+    mass[c] = 0, momentum[c] = Vec3::Zero(), energy[c] = 0;
+  }
+  const std::vector<std::vector<double>> recv = exchange_blocks(send);
+  for (int s = 0; s < r.size; ++s) {
+    if (s == r.rank) continue;
+    const std::vector<double>& b = recv[std::size_t(s)];
+    for (std::size_t k = 0; k + 6 <= b.size(); k += 6) {
+      const std::size_t c = std::size_t(b[k]);
+      mass[c] += b[k + 1];
+      momentum[c] += Vec3(b[k + 2], b[k + 3], b[k + 4]);
+      energy[c] += b[k + 5];
+    }
   }
 }
 

@@ -42,6 +42,7 @@ void SolidBurnModel::initialize(const Grid& grid, const std::vector<IceMaterialF
   burned_.energy = CellScalars(grid, 0);
   burned_.momentum = CellVectors(grid, 0);
   for (CellScalars* f : {&dm_, &on_surface_, &burning_}) f->fill(0.0);
+  sums_.reset(grid, 2);
 }
 
 void SolidBurnModel::compute_sources(const IceModelInput& in, IceModelSources& out) {
@@ -74,6 +75,7 @@ void SolidBurnModel::compute_sources(const IceModelInput& in, IceModelSources& o
   support_->burn_particles(reactant_, dm_, burned_);
   total_burned_ = total_heat_ = 0;
   total_momentum_ = Vec3::Zero();
+  sums_.zero();
   for (std::size_t pi = 0; pi < g.patches.size(); ++pi)
     for_each_cell_serial(g.patches[pi].cells(), [&](int i, int j, int k) {
       const IntVec3 c(i, j, k);
@@ -94,6 +96,8 @@ void SolidBurnModel::compute_sources(const IceModelInput& in, IceModelSources& o
       total_burned_ += dm;
       total_momentum_ += P;
       total_heat_ += heat;
+      sums_.at(pi, 0) += dm;
+      sums_.at(pi, 1) += heat;
     });
 }
 
@@ -116,11 +120,6 @@ std::set<std::string> SolidBurnModel::labels() const {
 
 std::vector<ModelField> SolidBurnModel::fields() const {
   return {{prefix_ + ".onSurface", 0, &on_surface_}, {prefix_ + ".BurningCell", 0, &burning_}};
-}
-
-void SolidBurnModel::reductions(const std::set<std::string>& l, std::map<std::string, std::vector<double>>& out) const {
-  if (l.count("totalMassBurned")) out["totalMassBurned"] = {total_burned_};
-  if (l.count("totalHeatReleased")) out["totalHeatReleased"] = {total_heat_};
 }
 
 }  // namespace tephra

@@ -15,6 +15,7 @@
 #include <string>
 
 #include "ice/models/IceModel.h"
+#include "ice/models/PatchSums.h"
 
 namespace tephra {
 
@@ -73,7 +74,11 @@ class SolidBurnModel : public IceModel {
   void compute_sources(const IceModelInput& in, IceModelSources& out) override;
   std::set<std::string> labels() const override;
   std::vector<ModelField> fields() const override;
-  void reductions(const std::set<std::string>& labels, std::map<std::string, std::vector<double>>& out) const override;
+  // totalMassBurned, totalHeatReleased of the last step per patch (added in
+  // patch order over the MPI ranks by ICE: the same bits on any rank count).
+  std::vector<ModelSum> patch_sums() const override {
+    return {{"totalMassBurned", &sums_, 0, 1}, {"totalHeatReleased", &sums_, 1, 1}};
+  }
   // Simple_Burn's cell rule (the default): a surface cell (SimpleBurn.h) with
   // temperature = the hottest start-of-step temperature among the materials
   // with theta > 0.2 above ThresholdTemp (0 if none), pressure = press_equil_CC.
@@ -106,7 +111,8 @@ class SolidBurnModel : public IceModel {
   SolidBurnSupport* support_ = nullptr;
   CellScalars dm_, on_surface_, burning_, ppc_;
   BurnedCells burned_;
-  double total_burned_ = 0, total_heat_ = 0;
+  double total_burned_ = 0, total_heat_ = 0;  // this process's, for mass_burned_last_step()
+  PatchSums sums_;                              // per own patch: burned mass, heat released
   Vec3 total_momentum_ = Vec3::Zero();
 };
 

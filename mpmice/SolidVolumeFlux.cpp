@@ -19,6 +19,7 @@
 // (partition of unity) - except next to a symmetry plane normal to d, whose
 // doubled node weights do not (the mirror particles are not moved).
 #include <algorithm>
+#include <stdexcept>
 #include <vector>
 
 #include "core/grid/Loop.h"
@@ -117,6 +118,24 @@ struct AxisFactors {
     }
   }
 };
+
+// a (flat over the cells with extra cells, CellIndex) summed over the MPI
+// ranks through a node-shaped copy (cell c at node c + off).
+void sum_cell_array_over_ranks(MpmComponent& mpm, const IndexRange& cells, const IntVec3& off, const NodeGrid& ng,
+                               const CellIndex& ci, std::vector<double>& a) {
+  std::vector<double> nodes(ng.count(), 0.0);
+  auto each = [&](auto&& fn) {
+    for_each_cell_serial(cells, [&](int i, int j, int k) {
+      const IntVec3 c(i, j, k), n = c + off;
+      if ((n.array() < 0).any() || (n.array() >= ng.n.array()).any())
+        throw std::logic_error("MPMICE: a cell without its lower node");
+      fn(a[ci(c)], nodes[ng.index(n)]);
+    });
+  };
+  each([](double& cell, double& node) { node = cell; });
+  mpm.sum_node_doubles(nodes);
+  each([](double& cell, double& node) { cell = node; });
+}
 
 }  // namespace
 
@@ -217,6 +236,7 @@ void MpmIceComponent::solid_mass_fluxes(double dt) {
     for (int d = 0; d < 3; ++d) {
       bool moved = false;
       for (std::size_t i = 0; i < p.size(); ++i) moved = moved || disp[i][d] != 0.0;
+      moved = mpm_->layout().any(moved);  // every rank takes the same branch (the sums below are collective)
       if (!moved) {
         // x_d unchanged: M1 = M0 bit for bit, every face flux along d is 0.
         for (std::size_t pi = 0; pi < g.patches.size(); ++pi) {
@@ -246,12 +266,17 @@ void MpmIceComponent::solid_mass_fluxes(double dt) {
           f -= M1[ci(c)] - M0[ci(c)];
         }
       });
+      // MPI ranks: each rank's fluxes are those of its own particles (M is
+      // linear in them); the sum over the ranks at the nodes c + off (the
+      // node arrays' sums, mpm/RankNodeSums.h) gives each face its total.
+      if (mpm_->layout().distributed) sum_cell_array_over_ranks(*mpm_, r, off, ng, ci, flux);
+      const bool all_ok = !mpm_->layout().any(!ok);
       for (std::size_t pi = 0; pi < g.patches.size(); ++pi) {
         GridArray<double>& Fd = F.at(d, pi);
         const Patch& patch = g.patches[pi];
         for_each_cell_serial({patch.lo, patch.hi + IntVec3::Unit(d)}, [&](int i, int j, int k) {
           const IntVec3 c(i, j, k);
-          Fd(c) = ok ? flux[ci(c)] : 0.0;
+          Fd(c) = all_ok ? flux[ci(c)] : 0.0;
         });
       }
       std::swap(M0, M1);

@@ -105,9 +105,6 @@ PreparedRun prepare(const std::string& deck_path) {
   r.time = read_time_parameters(r.deck->root.require_child("Time"));
   r.archiver = read_archiver_parameters(r.deck->root.require_child("DataArchiver"));
   r.component = make_component(*r.deck);
-  if (world_ranks().size > 1 && r.component->name() != "ICE" && r.component->name() != "MPM")
-    throw MissingFeature({}, r.component->name() + " on more than one MPI rank (issue 7: ICE and MPM run on ranks; "
-                                                   "run MPMICE decks without mpirun)");
   // Every saved label must be one the component can produce.
   std::set<std::string> known = r.component->known_labels();
   for (const DeckNode* s : r.deck->root.require_child("DataArchiver").children_named("save")) {
