@@ -119,7 +119,8 @@ TEST_P(AxisymmetricMode, FirstRadialModeConverges) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(LinearGimpCpdi, AxisymmetricMode, ::testing::Values("linear", "gimp", "cpdi"));
+INSTANTIATE_TEST_SUITE_P(AllInterpolators, AxisymmetricMode,
+                         ::testing::Values("linear", "gimp", "cpdi", "cpti", "3rdorderBS", "4thorderBS", "cpgimp"));
 
 }  // namespace
 }  // namespace tephra
