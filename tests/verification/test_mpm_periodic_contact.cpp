@@ -39,7 +39,7 @@ std::string contact_deck(const std::string& interp, const std::string& contact, 
     m.precision(17);
     m << "<material><density>1000</density><thermal_conductivity>1</thermal_conductivity><specific_heat>1"
       << "</specific_heat><constitutive_model type=\"hypo_elastic\"><K>6e3</K><G>3e3</G></constitutive_model>"
-      << "<geom_object><box label=\"b\"><min>[" << x0 + shift << ",0,0]</min><max>[" << x1 + shift << "," << kH << ","
+      << "<geom_object><box label=\"block" << (v > 0 ? "A" : "B") << "\"><min>[" << x0 + shift << ",0,0]</min><max>[" << x1 + shift << "," << kH << ","
       << kH << "]</max></box><res>[2,1,1]</res><velocity>[" << v << ",0,0]</velocity><temperature>300</temperature>"
       << "</geom_object></material>";
     return m.str();
