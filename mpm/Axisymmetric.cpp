@@ -3,6 +3,8 @@
 #include <cmath>
 
 #include "mpm/shape/ShapeAxisymmetric.h"
+#include "mpm/shape/ShapeBspline.h"
+#include "mpm/shape/ShapeBsplineCubic.h"
 #include "mpm/shape/ShapeGimp.h"
 
 namespace tephra {
@@ -101,6 +103,67 @@ bool cpdi_entries(const Particles& p, std::size_t i, const NodeGrid& g, int k0, 
   return true;
 }
 
+// The planar in-plane weights of a tensor-product interpolator (3rdorderBS,
+// 4thorderBS, cpgimp), which Vaango has no axisymmetric form of:
+//   S = S_r(r) S_z(z) / 2 on each hoop plane, grad S = (S_r' S_z, S_r S_z', 2 S / r_p) / 2,
+// the hoop factor T = S / r_p as in AxiLinear and axiCpdi. W = 2 * 4 * 4 = 32
+// entries (unused ones: weight 0 at a valid node). A node outside the grid
+// is accepted only with a zero factor.
+bool tensor_entries(const ShapeAxis& ar, const ShapeAxis& az, double r, const NodeGrid& g, int k0, int W,
+                    std::size_t* node, double* w, Vec3* grad) {
+  int e = 0;
+  for (int bz = 0; bz < az.count; ++bz)
+    for (int a = 0; a < ar.count; ++a) {
+      const int ix = ar.first + a, iy = az.first + bz;
+      const double S = 0.5 * ar.S[a] * az.S[bz];
+      const Vec3 gr(0.5 * ar.dS[a] * az.S[bz] / g.h[0], 0.5 * ar.S[a] * az.dS[bz] / g.h[1], S / r);
+      const bool inside = ix >= 0 && iy >= 0 && ix < g.n[0] && iy < g.n[1];
+      if (!inside && (S != 0.0 || gr != Vec3::Zero())) return false;
+      for (int c = 0; c < 2; ++c, ++e) {
+        node[e] = inside ? g.index(ix, iy, k0 + c) : g.index(0, 0, k0 + c);
+        w[e] = inside ? S : 0.0;
+        grad[e] = inside ? gr : Vec3::Zero();
+      }
+    }
+  for (; e < W; ++e) {
+    node[e] = node[0];
+    w[e] = 0.0;
+    grad[e] = Vec3::Zero();
+  }
+  return true;
+}
+
+// 3rdorderBS, 4thorderBS (boundary-modified at the domain faces, the axis
+// r = 0 included: ShapeBsplineCubic.h) and cpgimp (the GIMP convolution with
+// the half-lengths of the rectangle circumscribing F_2x2 size_2x2, as the
+// planar cpgimp of mpm/shape/ComputeStencils.cpp).
+bool planar_entries(const Particles& p, std::size_t i, const NodeGrid& g, InterpolatorKind kind, int k0, int W,
+                    std::size_t* node, double* w, Vec3* grad) {
+  const double r = p.x[i][0];
+  if (!(r > 0.0)) return false;
+  double xi[2];
+  for (int d = 0; d < 2; ++d) {
+    xi[d] = (p.x[i][d] - g.origin[d]) / g.h[d];
+    if (!(xi[d] >= 0.0 && xi[d] < g.n[d] - 1)) return false;
+  }
+  ShapeAxis ax[2];
+  for (int d = 0; d < 2; ++d) {
+    if (kind == InterpolatorKind::QuadraticBspline) {
+      ax[d] = quadratic_bspline_axis(xi[d]);
+    } else if (kind == InterpolatorKind::CubicBspline) {
+      const int lo = g.extra[d], top = g.n[d] - 1 - g.extra[d];
+      if (!(xi[d] >= lo && xi[d] <= top) || top - lo < 3) return false;
+      ax[d] = cubic_bspline_axis(xi[d], lo, top);
+    } else {  // CpGimp
+      const Eigen::Matrix2d e2 = p.F[i].topLeftCorner<2, 2>() * p.psize[i].topLeftCorner<2, 2>();
+      const double l = 0.5 * e2.row(d).cwiseAbs().sum();
+      if (!(l > 0.0 && l <= 1.0) || !(e2.determinant() > 0.0)) return false;
+      ax[d] = gimp_axis_any(xi[d], l);
+    }
+  }
+  return tensor_entries(ax[0], ax[1], r, g, k0, W, node, w, grad);
+}
+
 }  // namespace
 
 int axisymmetric_stencil_width(InterpolatorKind kind) {
@@ -108,8 +171,12 @@ int axisymmetric_stencil_width(InterpolatorKind kind) {
     case InterpolatorKind::Linear: return 8;
     case InterpolatorKind::Gimp: return 18;
     case InterpolatorKind::Cpdi: return 32;
-    default: return 0;
+    case InterpolatorKind::Cpti: return 32;              // Uintah's axiCptiInterpolator = the axiCpdi form
+    case InterpolatorKind::QuadraticBspline: return 18;  // 3 x 3 in-plane nodes x 2 planes
+    case InterpolatorKind::CubicBspline: return 32;      // up to 4 x 4 x 2
+    case InterpolatorKind::CpGimp: return 32;            // up to 4 x 4 x 2
   }
+  return 0;
 }
 
 long compute_axisymmetric_stencils(const Particles& p, const NodeGrid& g, InterpolatorKind kind, Stencils& s) {
@@ -117,6 +184,7 @@ long compute_axisymmetric_stencils(const Particles& p, const NodeGrid& g, Interp
   const int W = axisymmetric_stencil_width(kind);
   s.width = W;
   s.axis_nodes = 0;  // the flat form
+  s.hoop_factor = true;
   s.node.resize(np * W);
   s.w.resize(np * W);
   s.grad.resize(np * W);
@@ -126,9 +194,14 @@ long compute_axisymmetric_stencils(const Particles& p, const NodeGrid& g, Interp
     std::size_t* node = &s.node[i * W];
     double* w = &s.w[i * W];
     Vec3* grad = &s.grad[i * W];
-    const bool ok = kind == InterpolatorKind::Gimp   ? gimp_entries(p, i, g, k0, node, w, grad)
-                    : kind == InterpolatorKind::Cpdi ? cpdi_entries(p, i, g, k0, node, w, grad)
-                                                     : linear_entries(p, i, g, k0, node, w, grad);
+    bool ok = false;
+    switch (kind) {
+      case InterpolatorKind::Linear: ok = linear_entries(p, i, g, k0, node, w, grad); break;
+      case InterpolatorKind::Gimp: ok = gimp_entries(p, i, g, k0, node, w, grad); break;
+      case InterpolatorKind::Cpdi:
+      case InterpolatorKind::Cpti: ok = cpdi_entries(p, i, g, k0, node, w, grad); break;
+      default: ok = planar_entries(p, i, g, kind, k0, W, node, w, grad); break;
+    }
     if (!ok) return long(i);
   }
   return -1;

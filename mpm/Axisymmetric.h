@@ -5,6 +5,14 @@
 // extensive quantities are per radian:
 //   V_p = A_p r_p (A_p = h_x h_y / (res_x res_y) the particle's area), m_p = rho V_p.
 // GIMP and CPDI: mpm/shape/ShapeAxisymmetric.h (the same hoop convention).
+// cpti: Uintah's axiCptiInterpolator is the axiCpdi parallelogram form (4
+// corners, 1/8 per corner and hoop plane), so Tephra uses the CPDI entries;
+// Vaango keeps its planar (non-axisymmetric) linear interpolator for cpti
+// with <axisymmetric> (its MPMFlags sets no interpolator in that branch).
+// 3rdorderBS, 4thorderBS (Vaango: "can't be used with axisymmetry", a setup
+// error) and Tephra's cpgimp: the planar in-plane weights S_r(r) S_z(z) / 2
+// per hoop plane with the hoop factor T = S / r_p (docs/mpm-convergence.md
+// "Axisymmetric MPM" for their orders).
 // Linear (axisymmetric) shape functions (Vaango's AxiLinearInterpolator):
 //   S = N_x(r) N_y(z) / 2 on each of the two hoop planes,
 //   grad S = (dN_x/dr N_y / 2, N_x dN_y/dz / 2, S / r_p),
@@ -28,13 +36,15 @@ namespace tephra {
 // per-radian ones: V = (V_3d / dz_p) r, m = rho V; dz_p = h_z / res_z.
 void make_axisymmetric_particles(const Vec3& h, double density, Particles& p);
 
-// Entries per particle: linear 8, gimp 18 (3 x 3 in-plane nodes x 2 hoop
-// planes), cpdi 32 (4 corners x 2 x 2 nodes x 2 planes); 0 for the others.
+// Entries per particle: linear 8, gimp and 3rdorderBS 18 (3 x 3 in-plane
+// nodes x 2 hoop planes), cpdi and cpti 32 (4 corners x 2 x 2 nodes x 2
+// planes), 4thorderBS and cpgimp 32 (up to 4 x 4 x 2).
 int axisymmetric_stencil_width(InterpolatorKind kind);
 
 // The stencils of `kind` (linear above; gimp and cpdi: mpm/shape/ShapeAxisymmetric.h):
 // grad = (dS/dr, dS/dz, T) with T the hoop factor (S / r_p for linear and cpdi,
-// the volume average of N / r for gimp). Returns the first particle outside
+// the volume average of N / r for gimp; ShapeAxis factors for the B-splines
+// and cpgimp). Returns the first particle outside
 // the grid (or with r <= 0, or a degenerate CPDI domain), or -1.
 long compute_axisymmetric_stencils(const Particles& p, const NodeGrid& g, InterpolatorKind kind, Stencils& s);
 

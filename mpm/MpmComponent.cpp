@@ -285,10 +285,14 @@ void MpmComponent::exchange_momentum(ContactStage stage, double t, double dt) {
     c.position.resize(model.needs_positions() ? mats.size() : 0);
     for (std::size_t i = 0; i < c.gradient.size(); ++i) mass_gradient(mats[i].particles, mats[i].stencils, mats[i].grid, c.gradient[i]);
     for (std::size_t i = 0; i < c.position.size(); ++i)
-      mass_weighted_position(mats[i].particles, mats[i].stencils, mats[i].grid, c.position[i]);
+      if (periodic_.active()) mass_weighted_offset(mats[i].particles, mats[i].stencils, mats[i].grid, c.position[i]);
+      else mass_weighted_position(mats[i].particles, mats[i].stencils, mats[i].grid, c.position[i]);
     // Over the MPI ranks: both divide by the global m_g already, so the per-rank results add.
     for (std::vector<Vec3>& n : c.gradient) sum_node_vectors(n);
     for (std::vector<Vec3>& n : c.position) sum_node_vectors(n);
+    // Periodic aliases (mpm/PeriodicGrid.h): normals summed, positions folded as offsets.
+    for (std::vector<Vec3>& n : c.gradient) fold_vectors(periodic_, n);
+    for (std::size_t i = 0; i < c.position.size(); ++i) fold_positions(periodic_, mats[i].grid, c.position[i]);
     p2g_velocity_.resize(mats.size());
     for (std::size_t i = 0; i < mats.size(); ++i) p2g_velocity_[i] = mats[i].grid.velocity;
     if (!model.acts_on(stage)) return;

@@ -17,11 +17,24 @@ void read_loads_and_drivers(const Deck& deck, MpmSetup& setup) {
   setup.loads = parse_particle_loads(root.child("PhysicalBC"), setup.flags.use_load_curves);
   if (!setup.loads.empty() && !setup.flags.mms.empty())
     root.require_child("PhysicalBC").missing_feature("<PhysicalBC> loads together with <run_MMS_problem>");
-  // The loads flag particles by X = x - u, which a periodic wrap of x breaks;
-  // their areas are not per radian in axisymmetric runs.
-  if (!setup.loads.empty() && ((setup.grid.periodic.array() != 0).any() || setup.flags.axisymmetric))
-    root.require_child("PhysicalBC").missing_feature(std::string("<PhysicalBC> loads with ") +
-                                                     (setup.flags.axisymmetric ? "<axisymmetric>" : "<periodic>"));
+  // The loads flag particles by X = x - u, which a periodic wrap of x breaks.
+  if (!setup.loads.empty() && (setup.grid.periodic.array() != 0).any())
+    root.require_child("PhysicalBC").missing_feature("<PhysicalBC> loads with <periodic>");
+  // Axisymmetric runs: per-radian pressure loads on <axisymmetric_side> and
+  // <axisymmetric_end> cylinders (mpm/loads/ParticleLoads.h); force densities
+  // (per kg) and velocity surfaces need no area. Other surfaces' areas are
+  // not per radian: exit 3. An axisymmetric surface in a Cartesian run: DeckError.
+  for (const PressureSurface& s : setup.loads.pressure) {
+    const bool axi = s.kind == PressureSurface::Kind::AxiSide || s.kind == PressureSurface::Kind::AxiEnd;
+    if (setup.flags.axisymmetric && !axi)
+      root.require_child("PhysicalBC").missing_feature(
+          "a <pressure> surface other than an <axisymmetric_side> or <axisymmetric_end> cylinder with <axisymmetric>");
+    if (!setup.flags.axisymmetric && axi)
+      root.require_child("PhysicalBC").fail(
+          "<axisymmetric_side> / <axisymmetric_end> pressure surfaces need <MPM><axisymmetric>true");
+  }
+  if (setup.flags.axisymmetric && (!setup.loads.heat_flux.empty() || !setup.loads.moment.empty()))
+    root.require_child("PhysicalBC").missing_feature("<heat_flux> or <moment> loads with <axisymmetric>");
   // <rotating_coordinate_system> (mpm/loads/RotatingFrame.h): Cartesian, non-periodic, no MMS.
   if (const DeckNode* mpm_flags = root.child("MPM"))
     if (const DeckNode* rot = mpm_flags->child("rotating_coordinate_system")) {
@@ -52,12 +65,12 @@ void read_loads_and_drivers(const Deck& deck, MpmSetup& setup) {
         if (save->attribute("label") == std::optional<std::string>(l)) setup.energy_ledger = true;
       if (save->attribute("label") == std::optional<std::string>("g.stressFS")) setup.node_stress = true;
     }
-  // Axisymmetric (mpm/Axisymmetric.h): x = r >= 0, one hoop cell in z; linear, gimp or cpdi.
+  // Axisymmetric (mpm/Axisymmetric.h): x = r >= 0, one hoop cell in z; every interpolator.
   if (setup.flags.axisymmetric) {
     const DeckNode& flag = root.require_child("MPM").require_child("axisymmetric");
     if (axisymmetric_stencil_width(setup.flags.interpolator.kind) == 0)
       flag.missing_feature("axisymmetric MPM with the '" + interpolator_name(setup.flags.interpolator.kind) +
-                           "' interpolator (implemented: linear, gimp, cpdi)");
+                           "' interpolator");
     if (setup.grid.cells[2] != 1) flag.fail("axisymmetric MPM needs exactly one cell in z (the hoop direction)");
     if (setup.grid.lower[0] < 0.0) flag.fail("axisymmetric MPM: x is the radius, the grid must start at x >= 0");
     if ((setup.grid.periodic.array() != 0).any()) flag.missing_feature("axisymmetric MPM with periodic directions");
@@ -93,19 +106,15 @@ void check_body_force_stress(const Deck& deck, MpmSetup& setup) {
 
 void check_driver_combinations(const Deck& deck, MpmSetup& setup) {
   const DeckNode& root = deck.root;
-  if ((setup.grid.periodic.array() != 0).any() && setup.contact && setup.materials.size() > 1)
-    root.require_child("Grid").missing_feature("periodic MPM with contact (normals across a periodic face)");
-  if (setup.flags.axisymmetric && setup.contact && setup.materials.size() > 1)
-    root.require_child("MPM").require_child("axisymmetric").missing_feature(
-        "axisymmetric MPM with contact (normals from the axisymmetric gradients)");
-  // Heat conduction (mpm/thermal) uses Cartesian volumes: not combined with
-  // axisymmetric runs yet (periodic directions fold the grid temperature and
-  // rate, mpm/PeriodicGrid.h). A scene whose temperature stays uniform never
-  // conducts, so the run stops (exit 3, naming this element) only at the
-  // first step that would conduct.
-  if (setup.flags.axisymmetric)
-    setup.conduction_unsupported = {root.require_child("MPM").require_child("axisymmetric").location(),
-                                    "axisymmetric MPM with heat conduction"};
+  // Contact on periodic grids: normals and positions folded over the node
+  // aliases (mpm/PeriodicGrid.h); friction_LR fits a plane through the
+  // particles reaching each node, which differ between a ghost and its image.
+  if ((setup.grid.periodic.array() != 0).any() && setup.contact && setup.materials.size() > 1 &&
+      setup.contact->type() == "friction_LR")
+    root.require_child("Grid").missing_feature("periodic MPM with friction_LR contact");
+  // Heat conduction works with axisymmetric stencils (in-plane gradients,
+  // per-radian volumes: mpm/thermal/HeatConduction.cpp) and periodic grids
+  // (folded temperature and rate, mpm/PeriodicGrid.h).
 }
 
 }  // namespace tephra

@@ -66,6 +66,22 @@ void fold_mass_weighted(const PeriodicNodes& map, const std::vector<double>& mas
     if (mass[n] > 0.0) f[n] /= mass[n];
 }
 
+void fold_vectors(const PeriodicNodes& map, std::vector<Vec3>& v) {
+  if (!map.active()) return;
+  fold(map.canonical, v, Vec3::Zero().eval());
+}
+
+void fold_positions(const PeriodicNodes& map, const NodeGrid& g, std::vector<Vec3>& x) {
+  if (!map.active()) return;
+  const std::size_t nx = std::size_t(g.n[0]), ny = std::size_t(g.n[1]);
+  auto node_position = [&](std::size_t n) { return g.position(int(n % nx), int((n / nx) % ny), int(n / (nx * ny))); };
+  // Back to the particle sums m_g d_g = sum m_p (x_p - X_g) S.
+  for (std::size_t n = 0; n < x.size(); ++n) x[n] *= g.mass[n];
+  fold(map.canonical, x, Vec3::Zero().eval());
+  for (std::size_t n = 0; n < x.size(); ++n)
+    x[n] = g.mass[n] > 0.0 ? Vec3(node_position(n) + x[n] / g.mass[n]) : Vec3::Zero();
+}
+
 int periodic_ghost_layers(InterpolatorKind kind) {
   switch (kind) {
     case InterpolatorKind::Linear: return 0;

@@ -25,8 +25,13 @@
 // each with a linear support of one cell): 2; a stencil that reaches further
 // stops the run (the particle's stencil leaves the grid: exit 4). The
 // boundary-modified cubic B-spline (4thorderBS) has no periodic form
-// (MissingFeature). Contact normals across a periodic face are not folded
-// (contact with periodic directions is a MissingFeature). Heat conduction:
+// (MissingFeature). Contact: the mass gradients (the normals) are summed over
+// each alias set (fold_vectors) and the mass-weighted positions averaged as
+// offsets from their node (fold_positions), so a ghost and its image see the
+// same normal, position and, by fold_particle_sums, the same m, v, V and
+// stress: the node-wise exchange gives them the same velocities. friction_LR,
+// which fits a plane through the particles that reach each node, has no
+// periodic form (MissingFeature). Heat conduction:
 // the grid temperature and the conduction rate are folded like the sums
 // (fold_mass_weighted, mpm/thermal/ThermalPhase.cpp).
 //
@@ -65,6 +70,16 @@ void fold_internal_force(const PeriodicNodes& map, NodeGrid& g);
 // temperature and the conduction rate, mpm/thermal): f <- fold(f m) / m on
 // every alias set, so each alias holds (sum over the set) / m_g.
 void fold_mass_weighted(const PeriodicNodes& map, const std::vector<double>& mass, std::vector<double>& f);
+
+// A particle sum v (the contact mass gradient) summed over each alias set, on every alias.
+void fold_vectors(const PeriodicNodes& map, std::vector<Vec3>& v);
+
+// The contact positions x_g = X_g + sum m_p (x_p - X_g) S / m_g from the
+// offsets d_g = sum m_p (x_p - X_g) S / m_g (mass_weighted_offset,
+// mpm/contact/ContactNormals.h; m_g folded): d_g is summed over each alias
+// set as the particle sum m_g d_g, then x_g = X_g + d_g on every alias
+// (aliases lie whole periods apart, so positions themselves do not add).
+void fold_positions(const PeriodicNodes& map, const NodeGrid& g, std::vector<Vec3>& x);
 
 // Ghost node layers a periodic direction needs for `kind`; -1: no periodic form (4thorderBS).
 int periodic_ghost_layers(InterpolatorKind kind);

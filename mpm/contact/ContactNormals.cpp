@@ -10,6 +10,10 @@ void mass_gradient(const Particles& p, const Stencils& s, const NodeGrid& g, std
     for (std::size_t i = 0; i < p.size(); ++i)
       view.entries(i, [&](std::size_t gi, double, const Vec3& gr) { out[gi] += p.mass[i] * gr; });
   });
+  // Axisymmetric stencils: grad[2] is the hoop factor, not a derivative; the
+  // mass gradient (and so every contact normal) lies in the r-z plane.
+  if (s.hoop_factor)
+    for (Vec3& v : out) v[2] = 0.0;
 }
 
 void mass_weighted_position(const Particles& p, const Stencils& s, const NodeGrid& g, std::vector<Vec3>& out) {
@@ -17,6 +21,20 @@ void mass_weighted_position(const Particles& p, const Stencils& s, const NodeGri
   visit_stencils(s, [&](const auto& view) {
     for (std::size_t i = 0; i < p.size(); ++i)
       view.weights(i, [&](std::size_t gi, double w) { out[gi] += p.mass[i] * w * p.x[i]; });
+  });
+  for (std::size_t gi = 0; gi < g.count(); ++gi)
+    if (g.mass[gi] > 0.0) out[gi] /= g.mass[gi];
+}
+
+void mass_weighted_offset(const Particles& p, const Stencils& s, const NodeGrid& g, std::vector<Vec3>& out) {
+  out.assign(g.count(), Vec3::Zero());
+  const std::size_t nx = std::size_t(g.n[0]), ny = std::size_t(g.n[1]);
+  visit_stencils(s, [&](const auto& view) {
+    for (std::size_t i = 0; i < p.size(); ++i)
+      view.weights(i, [&](std::size_t gi, double w) {
+        const Vec3 X = g.position(int(gi % nx), int((gi / nx) % ny), int(gi / (nx * ny)));
+        out[gi] += p.mass[i] * w * (p.x[i] - X);
+      });
   });
   for (std::size_t gi = 0; gi < g.count(); ++gi)
     if (g.mass[gi] > 0.0) out[gi] /= g.mass[gi];

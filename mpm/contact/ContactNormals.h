@@ -18,4 +18,8 @@ void mass_gradient(const Particles& p, const Stencils& s, const NodeGrid& g, std
 // x_g = sum_p m_p x_p S_gp / m_g (Vaango's gPosition); 0 where m_g = 0.
 void mass_weighted_position(const Particles& p, const Stencils& s, const NodeGrid& g, std::vector<Vec3>& out);
 
+// d_g = sum_p m_p (x_p - X_g) S_gp / m_g, X_g the node's position (periodic
+// grids: the offsets fold over node aliases, mpm/PeriodicGrid.h fold_positions).
+void mass_weighted_offset(const Particles& p, const Stencils& s, const NodeGrid& g, std::vector<Vec3>& out);
+
 }  // namespace tephra

@@ -73,9 +73,16 @@ void parse_surface(const DeckNode& geom_object, PressureSurface& s) {
     if (!(s.radius > 0.0)) g.require_child("radius").fail("radius must be > 0");
     const double L = (s.top - s.bottom).norm();
     if (!(L > 0.0)) g.fail("cylinder top and bottom must differ");
-    if (g.get_bool("axisymmetric_end", false) || g.get_bool("axisymmetric_side", false))
-      g.missing_feature("axisymmetric pressure surfaces (<axisymmetric_end>, <axisymmetric_side>)");
-    if (g.get_bool("cylinder_end", false)) {
+    const bool axi_end = g.get_bool("axisymmetric_end", false), axi_side = g.get_bool("axisymmetric_side", false);
+    if (axi_end || axi_side) {
+      // x = r, y = z (the axis), z = the hoop cell: the axis is the line x = 0.
+      if (s.bottom[0] != 0.0 || s.top[0] != 0.0 || s.bottom[2] != s.top[2] || !(s.top[1] != s.bottom[1]))
+        g.fail("an axisymmetric cylinder surface lies on the axis x = 0 along y (bottom and top differ in y only)");
+      if (axi_end && axi_side) g.fail("a cylinder is either <axisymmetric_end> or <axisymmetric_side>");
+      if (g.get_bool("cylinder_end", false)) g.fail("<cylinder_end> and an axisymmetric surface exclude each other");
+      s.kind = axi_end ? PressureSurface::Kind::AxiEnd : PressureSurface::Kind::AxiSide;
+      s.area = axi_side ? s.radius * L : 0.5 * s.radius * s.radius;  // per radian (Vaango's getSurfaceArea)
+    } else if (g.get_bool("cylinder_end", false)) {
       s.kind = PressureSurface::Kind::CylinderEnd;
       s.area = std::numbers::pi * s.radius * s.radius;  // one end cap (Vaango: end caps / 2)
     } else {
@@ -155,6 +162,16 @@ bool PressureSurface::on_surface(const Vec3& X, const Vec3& dxpp) const {
       const double tol = dxpp.norm(), r = (X - origin).norm();
       return r >= radius - tol && r <= radius + tol;
     }
+    case Kind::AxiSide:
+    case Kind::AxiEnd: {
+      // In the r-z plane: r = X_x, s = the axial distance from bottom (the
+      // hoop coordinate X_z plays no part).
+      const double tol = 0.9 * std::min(dxpp[0], dxpp[1]);
+      const double L = std::abs(top[1] - bottom[1]);
+      const double s = (X[1] - bottom[1]) * (top[1] > bottom[1] ? 1.0 : -1.0), r = X[0];
+      if (kind == Kind::AxiSide) return s >= 0.0 && s <= L && r >= radius - tol && r <= radius + tol;
+      return s >= -tol && s <= L + tol && r <= radius;
+    }
   }
   return false;
 }
@@ -171,6 +188,10 @@ Vec3 PressureSurface::normal(const Vec3& x) const {
       const Vec3 d = x - origin;
       return d.norm() > 0.0 ? Vec3(d.normalized()) : Vec3::Zero();
     }
+    case Kind::AxiSide:
+      return Vec3::UnitX();  // e_r, away from the axis (Vaango's radialDirection)
+    case Kind::AxiEnd:
+      return (top - bottom).normalized();
   }
   return Vec3::Zero();
 }
@@ -191,13 +212,19 @@ ParticleLoads parse_particle_loads(const DeckNode* physical_bc, bool use_load_cu
         if (!(fraction > 0.0 && fraction <= 1.0))
           bc.require_child("volume_fraction_inside_domain").fail("volume_fraction_inside_domain must be in (0, 1]");
         s.area *= fraction;
+        if (s.kind == PressureSurface::Kind::AxiEnd) {
+          // Vaango requires <res> with an axisymmetric end: dr_p = h_x / res_x.
+          const Vec3 res = bc.get_vec3("res");
+          if (!(res[0] >= 1.0)) bc.require_child("res").fail("<res> must be >= 1 in x");
+          s.end_dr_fraction = 1.0 / res[0];
+        }
         if (const DeckNode* f = bc.child("load_curve_scaling_function")) {
           const auto v = parse_double(f->text);
           if (!v || *v != 1.0)
             f->missing_feature("load_curve_scaling_function '" + f->text + "' (only the constant 1 is implemented)");
         }
-        // <outward_normal> acts only with CBDI (use_CBDI_boundary_condition); <res> only with
-        // axisymmetric ends (both unimplemented, rejected where they are switched on).
+        // <outward_normal> acts only with CBDI (use_CBDI_boundary_condition; unimplemented,
+        // rejected where it is switched on); <res> only with axisymmetric ends.
         if (const DeckNode* o = bc.child("outward_normal")) o->as_bool();
         if (use_load_curves) loads.pressure.push_back(std::move(s));
         else
@@ -298,10 +325,17 @@ void apply_particle_loads(const ParticleLoads& loads, double t, const Vec3& h,
         for (std::size_t k = 0; k < loads.pressure.size(); ++k) {
           const PressureSurface& s = loads.pressure[k];
           if (!s.on_surface(X, dxpp)) continue;
-          // Nanson: n da = J F^{-T} N dA, so the reference normal times J F^{-T}.
+          // Nanson: n da = J F^{-T} N dA, so the reference normal times J F^{-T}
+          // (axisymmetric: J includes the hoop stretch F_thth = r / R).
           const Mat3& F = p.F[i];
           const Vec3 scaled_normal = F.determinant() * (F.inverse().transpose() * s.normal(p.x[i]));
-          f += per_particle[k] * scaled_normal;
+          // Axisymmetric end: the wedge p X_r dr_p of this particle's annulus
+          // (Vaango: p x_r dr_p with the current x_r, without Nanson; Tephra
+          // takes the reference area and maps it with J F^{-T}).
+          const double force = s.kind == PressureSurface::Kind::AxiEnd
+                                   ? s.curve.at(t) * X[0] * s.end_dr_fraction * h[0]
+                                   : per_particle[k];
+          f += force * scaled_normal;
         }
       }
       p.external_force[i] = f;

@@ -43,8 +43,14 @@ namespace tephra {
 class DeckNode;
 
 struct PressureSurface {
-  enum class Kind { Box, Cylinder, CylinderEnd, Sphere };
+  // AxiSide, AxiEnd: <axisymmetric_side>, <axisymmetric_end> of a cylinder
+  // whose axis is the axisymmetric run's axis (x = r = 0, along y); per-radian
+  // loads as Vaango's PressureBC: the side's area R L (2 pi R L / 2 pi) shared
+  // by its N particles, the end's force p X_r dr_p per particle (the 1-radian
+  // wedge of the annulus of width dr_p = h_x / res_x, <res> of the <pressure>).
+  enum class Kind { Box, Cylinder, CylinderEnd, Sphere, AxiSide, AxiEnd };
   Kind kind = Kind::Box;
+  double end_dr_fraction = 0.0;               // AxiEnd: 1 / res_x (dr_p = h_x / res_x)
   Vec3 lo = Vec3::Zero(), hi = Vec3::Zero();  // box
   int thickness_dir = 0;                      // box: the direction of its smallest side
   Vec3 bottom = Vec3::Zero(), top = Vec3::Zero();  // cylinder

@@ -213,6 +213,7 @@ bool compute_axis_stencils(const Particles& p, const NodeGrid& g, const Interpol
   release(s.w);
   release(s.grad);
   s.order.particles = 0;
+  s.hoop_factor = false;
   bool ok = false;
   switch (spec.kind) {
     case InterpolatorKind::Linear: ok = fill_axis<InterpolatorKind::Linear, 2>(p, g, s); break;
@@ -227,6 +228,7 @@ bool compute_axis_stencils(const Particles& p, const NodeGrid& g, const Interpol
 long compute_stencils(const Particles& p, const NodeGrid& g, const InterpolatorSpec& spec, Stencils& s) {
   s.width = stencil_width(spec.kind);
   s.axis_nodes = 0;
+  s.hoop_factor = false;
   release(s.base);
   release(s.factors);
   const std::size_t n = p.size() * std::size_t(s.width);

@@ -47,6 +47,10 @@ struct Stencils {
   std::vector<std::size_t> node;  // flat node index (NodeGrid::index)
   std::vector<double> w;          // S_gp
   std::vector<Vec3> grad;         // grad S_gp [1/m]
+  // Axisymmetric stencils (mpm/Axisymmetric.h): grad[2] is the hoop factor
+  // T_gp (S / r_p for most interpolators) of v_r / r and sigma_thth / r, not
+  // a derivative; gradients of scalars (temperature, mass) use grad[0..1].
+  bool hoop_factor = false;
   // Per-axis form of the tensor-product interpolators (axis_nodes = N > 0,
   // node / w / grad empty; mpm/shape/AxisStencils.h forms the entries):
   // particle p stores the flat index of its lowest support node and, per

@@ -24,11 +24,17 @@ void add_conduction_rate(const Particles& p, const Stencils& s, const NodeGrid& 
                          double specific_heat, ThermalNodes& t) {
   // The heat flow into node g, Q_g = -sum_p k V_p grad S_gp . grad T_p [W],
   // gathered first and divided by the node's heat capacity m_g c_v after.
+  // Axisymmetric stencils: only the in-plane (r, z) components are
+  // derivatives (grad T has no hoop component); with per-radian V_p and m_g
+  // the sum is the Galerkin form of (1/r) d/dr (r k dT/dr) + d/dz (k dT/dz),
+  // int k grad S . grad T r dr dz, evaluated at the particles.
+  const Vec3 mask = s.hoop_factor ? Vec3(1.0, 1.0, 0.0) : Vec3(1.0, 1.0, 1.0);
   std::vector<double> heat_flow(g.count(), 0.0);
   visit_stencils(s, [&](const auto& view) {
     for (std::size_t i = 0; i < p.size(); ++i) {
       Vec3 grad_T = Vec3::Zero();
       view.entries(i, [&](std::size_t gi, double, const Vec3& gr) { grad_T += t.temperature[gi] * gr; });
+      grad_T = grad_T.cwiseProduct(mask);
       const Vec3 flux_volume = conductivity * p.volume[i] * grad_T;  // -q V_p, q = -k grad T
       view.entries(i, [&](std::size_t gi, double, const Vec3& gr) { heat_flow[gi] -= gr.dot(flux_volume); });
     }

@@ -32,10 +32,12 @@ bool MpmComponent::thermal_grid_needed() const {
 double MpmComponent::thermal_stable_timestep() const {
   double dt = std::numeric_limits<double>::infinity();
   if (!thermal_grid_needed() || !setup_.flags.explicit_heat_conduction) return dt;
+  // Axisymmetric: z is the hoop direction, without a conduction term (1/h_z^2 -> 0).
+  Vec3 h = setup_.grid.dx;
+  if (setup_.flags.axisymmetric) h[2] = std::numeric_limits<double>::infinity();
   for (const MpmMaterial& m : setup_.materials)
     if (m.thermal_conductivity > 0.0)
-      dt = std::min(dt, conduction_stable_timestep(m.thermal_conductivity / (m.density * m.specific_heat),
-                                                   setup_.grid.dx));
+      dt = std::min(dt, conduction_stable_timestep(m.thermal_conductivity / (m.density * m.specific_heat), h));
   return dt;
 }
 

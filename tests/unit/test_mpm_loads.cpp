@@ -117,10 +117,24 @@ TEST(MpmLoads, DeckErrorsAndMissingFeatures) {
   EXPECT_THROW(loads_of("<pressure>" + box + kCurve +
                         "<load_curve_scaling_function>t*2</load_curve_scaling_function></pressure>"),
                MissingFeature);
+  // Axisymmetric surfaces (session 15): the side's per-radian area R L; an
+  // end needs the <pressure>'s <res> (Vaango requires it); the axis is x = 0
+  // along y. (Whether the run is axisymmetric is checked by the deck reader:
+  // test_mpm_axisymmetric_loads.)
+  const ParticleLoads side = loads_of(
+      "<pressure><geom_object><cylinder><bottom>[0,0,0]</bottom><top>[0,2,0]</top><radius>0.5</radius>"
+      "<axisymmetric_side>true</axisymmetric_side></cylinder></geom_object>" + std::string(kCurve) + "</pressure>");
+  ASSERT_EQ(side.pressure.size(), 1u);
+  EXPECT_EQ(side.pressure[0].kind, PressureSurface::Kind::AxiSide);
+  EXPECT_DOUBLE_EQ(side.pressure[0].area, 0.5 * 2.0);  // 2 pi R L / (2 pi)
   EXPECT_THROW(loads_of("<pressure><geom_object><cylinder><bottom>[0,0,0]</bottom><top>[0,1,0]</top><radius>1</radius>"
+                        "<axisymmetric_end>true</axisymmetric_end></cylinder></geom_object>" +
+                        std::string(kCurve) + "</pressure>"),
+               DeckError);  // no <res>
+  EXPECT_THROW(loads_of("<pressure><geom_object><cylinder><bottom>[1,0,0]</bottom><top>[1,1,0]</top><radius>1</radius>"
                         "<axisymmetric_side>true</axisymmetric_side></cylinder></geom_object>" +
                         std::string(kCurve) + "</pressure>"),
-               MissingFeature);
+               DeckError);  // not on the axis x = 0
   EXPECT_NO_THROW(loads_of("<pressure>" + box + kCurve +
                            "<load_curve_scaling_function>1.0</load_curve_scaling_function></pressure>"));
   // Times must increase.

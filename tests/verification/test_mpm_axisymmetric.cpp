@@ -98,14 +98,12 @@ TEST_P(MpmAxisymmetricInterp, UniformlyExpandingCylinderHasTheHoopStress) {
 
 INSTANTIATE_TEST_SUITE_P(LinearGimpCpdi, MpmAxisymmetricInterp, ::testing::Values("linear", "gimp", "cpdi"));
 
-// The B-splines and cpti have no axisymmetric form: exit 3 naming the interpolator.
-TEST(MpmAxisymmetric, QuadraticBsplineIsAMissingFeature) {
-  auto deck = load_deck_from_string(axisymmetric_deck("3rdorderBS"), "axisymmetric_bs.ups", ".");
-  EXPECT_THROW(make_mpm_component(*deck), MissingFeature);
-}
+// Every interpolator has an axisymmetric form since session 15
+// (test_mpm_axisymmetric_shape, test_mpm_axisymmetric_mode).
 
-// Pressure loads (areas not per radian) and a prescribed deformation are not
-// combined with the axisymmetric step: exit 3.
+// A box pressure surface (its area is not per radian; the axisymmetric
+// cylinder surfaces are, test_mpm_axisymmetric_loads) and a prescribed
+// deformation are not combined with the axisymmetric step: exit 3.
 TEST(MpmAxisymmetric, LoadsAndPrescribedDeformationAreMissingFeatures) {
   std::string loaded = axisymmetric_deck();
   loaded.replace(loaded.find("<axisymmetric>"), 0, "<use_load_curves>true</use_load_curves>");
