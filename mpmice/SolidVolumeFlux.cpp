@@ -25,10 +25,7 @@
 #include "core/grid/Loop.h"
 #include "mpm/SymmetryFold.h"
 #include "mpm/shape/AxisStencils.h"
-#include "mpm/shape/ShapeAxis.h"
-#include "mpm/shape/ShapeBspline.h"
-#include "mpm/shape/ShapeGimp.h"
-#include "mpm/shape/ShapeLinear.h"
+#include "mpm/shape/AxisShape.h"
 #include "mpmice/CellProjection.h"
 #include "mpmice/MpmIceComponent.h"
 
@@ -52,44 +49,26 @@ struct CellIndex {
 // mpm/shape/Interpolator.h: S_gp = S_x[a] S_y[b] S_z[c]), kept per axis so that
 // a move along one axis recomputes that axis only: the other axes' factors
 // depend on the other coordinates, which the move leaves bit for bit.
-// The factors are those of compute_axis_stencils (fill_axis_particle in
-// mpm/shape/ComputeStencils.cpp: the same 1-D functions of the same
-// xi = (x - origin)/h and half-length psize/2, the same validity rules), so
-// the weights S_x S_y S_z, formed in the same order, are the same bits.
+// The factors come from axis_shape (mpm/shape/AxisShape.h), which
+// compute_axis_stencils uses too, so the weights S_x S_y S_z, formed in the
+// same order, are the same bits.
 struct AxisFactors {
   int N = 0;                       // nodes per axis: 2 linear, 3 GIMP / quadratic B-spline; 0: no per-axis form
   std::vector<int> first[3];       // lowest node of particle i's support along d
   std::vector<double> S[3];        // S[d][i * N + a]
 
-  // N for the interpolator, 0 if it has no per-axis form (compute_axis_stencils' switch).
-  static int nodes_per_axis(InterpolatorKind k) {
-    switch (k) {
-      case InterpolatorKind::Linear: return 2;
-      case InterpolatorKind::Gimp: return 3;
-      case InterpolatorKind::QuadraticBspline: return 3;
-      default: return 0;
-    }
-  }
-
-  // Axis d of every particle of q on grid sg; false when a particle's support
-  // leaves the grid along d or has another node count (where
-  // compute_axis_stencils fails).
+  // Axis d of every particle of q on grid sg (mpm/shape/AxisShape.h, the
+  // rule of compute_axis_stencils); false when some particle's support
+  // leaves the grid along d.
   bool fill(InterpolatorKind kind, const Particles& q, const NodeGrid& sg, int d) {
     const std::size_t np = q.size();
     first[d].resize(np);
     S[d].resize(np * std::size_t(N));
     bool ok = true;
     for (std::size_t i = 0; i < np; ++i) {
-      const double xi = (q.x[i][d] - sg.origin[d]) / sg.h[d];
-      if (!(xi >= 0.0 && xi < sg.n[d] - 1)) {
-        ok = false;
-        continue;
-      }
+      const double half_length = kind == InterpolatorKind::Gimp ? 0.5 * q.psize[i](d, d) : 0.0;
       ShapeAxis ax;
-      if (kind == InterpolatorKind::Linear) ax = linear_axis(xi);
-      else if (kind == InterpolatorKind::Gimp) ax = gimp_axis(xi, 0.5 * q.psize[i](d, d));
-      else ax = quadratic_bspline_axis(xi);
-      if (ax.count != N || ax.first < 0 || ax.first + N > sg.n[d]) {
+      if (!axis_shape(kind, q.x[i][d], sg.origin[d], sg.h[d], sg.n[d], half_length, ax)) {
         ok = false;
         continue;
       }
@@ -216,7 +195,7 @@ void MpmIceComponent::solid_mass_fluxes(double dt) {
       return true;
     };
     AxisFactors fac;
-    fac.N = AxisFactors::nodes_per_axis(spec.kind);
+    fac.N = axis_nodes_of(spec.kind);
     bool axis_ok[3] = {false, false, false};
     if (fac.N)
       for (int d = 0; d < 3; ++d) axis_ok[d] = fac.fill(spec.kind, q, sg, d);

@@ -4,6 +4,7 @@
 
 #include "mpm/NodeGrid.h"
 #include "mpm/Particles.h"
+#include "mpm/shape/AxisShape.h"
 #include "mpm/shape/Interpolator.h"
 #include "mpm/shape/ShapeBspline.h"
 #include "mpm/shape/ShapeBsplineCubic.h"
@@ -160,17 +161,10 @@ long fill(const Particles& p, const NodeGrid& g, const InterpolatorSpec& spec, S
 // leaves the grid. Same 1-D factors as fill_particle.
 template <InterpolatorKind K, int N>
 bool fill_axis_particle(const Particles& p, const NodeGrid& g, const Vec3& inv_h, std::size_t i, Stencils& s) {
-  Vec3 xi;
-  for (int d = 0; d < 3; ++d) {
-    xi[d] = (p.x[i][d] - g.origin[d]) / g.h[d];
-    if (!(xi[d] >= 0.0 && xi[d] < g.n[d] - 1)) return false;
-  }
   ShapeAxis ax[3];
   for (int d = 0; d < 3; ++d) {
-    if constexpr (K == InterpolatorKind::Linear) ax[d] = linear_axis(xi[d]);
-    if constexpr (K == InterpolatorKind::Gimp) ax[d] = gimp_axis(xi[d], 0.5 * p.psize[i](d, d));
-    if constexpr (K == InterpolatorKind::QuadraticBspline) ax[d] = quadratic_bspline_axis(xi[d]);
-    if (ax[d].count != N || ax[d].first < 0 || ax[d].first + N > g.n[d]) return false;
+    const double half_length = K == InterpolatorKind::Gimp ? 0.5 * p.psize[i](d, d) : 0.0;
+    if (!axis_shape<K, N>(p.x[i][d], g.origin[d], g.h[d], g.n[d], half_length, ax[d])) return false;
   }
   s.base[i] = g.index(ax[0].first, ax[1].first, ax[2].first);
   double* f = s.factors.data() + i * 6 * N;
