@@ -41,7 +41,10 @@ class GridArray {
     storage_ = {with_extra.lo.cwiseMin(interior.lo - IntVec3::Constant(ghosts)),
                 with_extra.hi.cwiseMax(interior.hi + IntVec3::Constant(ghosts))};
     n_ = storage_.extent();
-    data_.resize(static_cast<size_t>(storage_.size()));
+    // Every value starts at zero: an Eigen vector's default constructor leaves
+    // its entries uninitialised, and cells no phase writes (extra cells of a
+    // source field, say) would otherwise reach the output as garbage.
+    data_.assign(static_cast<size_t>(storage_.size()), zero_value());
   }
 
   T& operator()(int i, int j, int k) { return data_[offset(i, j, k)]; }
@@ -72,6 +75,11 @@ class GridArray {
   int ghosts_ = 0;
   IndexRange interior_, with_extra_, storage_;
   IntVec3 n_ = IntVec3::Zero();
+  static T zero_value() {
+    if constexpr (requires { T::Zero(); }) return T::Zero();
+    else return T(0);
+  }
+
   std::vector<T> data_;
 };
 
