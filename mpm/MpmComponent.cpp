@@ -545,13 +545,18 @@ void MpmComponent::advance(double t, double dt, int step) {
       wrap_periodic_positions(setup_.grid, p);  // re-enter through the opposite periodic face
       update_temperatures(m, dt);  // T += dt (sum rate_g S + model heating)
       if (setup_.flags.test_for_negative_temperatures) check_temperatures(m, step);  // T < 0: exit 4
-      // The lowest particle with a non-finite velocity or outside the grid (threads), then its message.
-      const NodeGrid& grid = m.grid;
+      // The lowest particle with a non-finite velocity or more than one cell
+      // beyond a (non-periodic) domain face (threads), then its message: within
+      // the CFL limit a particle moves less than a cell per step, so that is a
+      // blow-up. A particle less than a cell beyond a face has left the domain
+      // and is deleted below (Uintah's relocation rule, mpm/ParticleDeletion.h).
+      const Grid& domain = setup_.grid;
       auto fine = [&](std::size_t i) {
         if (!p.v[i].allFinite()) return false;
         for (int d = 0; d < 3; ++d) {
-          const double xi = (p.x[i][d] - grid.origin[d]) / grid.h[d];
-          if (!(xi >= 0.0 && xi < grid.n[d] - 1)) return false;
+          if (domain.periodic[d]) continue;
+          const double x = p.x[i][d];
+          if (!(x > domain.lower[d] - domain.dx[d] && x < domain.upper[d] + domain.dx[d])) return false;
         }
         return true;
       };
@@ -562,7 +567,8 @@ void MpmComponent::advance(double t, double dt, int step) {
         if (!fine(std::size_t(i))) bad = std::min(bad, i);
       if (bad < np)
         fail_particle(m, std::size_t(bad), step, "interpolate to particles",
-                      p.v[bad].allFinite() ? "particle left the grid" : "non-finite velocity");
+                      p.v[bad].allFinite() ? "particle left the grid (more than one cell beyond a domain face in one step)"
+                                           : "non-finite velocity");
       delete_particles(m, v_old.empty() ? p.v : v_old, step);  // Vaango's limits (mpm/ParticleDeletion.h)
     }
   }

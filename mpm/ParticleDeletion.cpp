@@ -50,6 +50,15 @@ void remove_particles(Particles& p, const std::vector<char>& keep, std::vector<s
     if (c->size() == n) compact(*c, keep);
 }
 
+bool outside_domain(const Grid& domain, const Vec3& x, int* d_out) {
+  for (int d = 0; d < 3; ++d)
+    if (!domain.periodic[d] && (x[d] < domain.lower[d] || x[d] > domain.upper[d])) {
+      if (d_out) *d_out = d;
+      return true;
+    }
+  return false;
+}
+
 std::vector<char> apply_particle_limits(const ParticleLimits& limits, const std::vector<Vec3>& v_old,
                                         Particles& p, std::vector<DeletedParticle>& deleted) {
   std::vector<char> keep(p.size(), 1);
@@ -60,7 +69,8 @@ std::vector<char> apply_particle_limits(const ParticleLimits& limits, const std:
   long first = np;  // the lowest particle the loop below acts on
 #pragma omp parallel for schedule(static) reduction(min : first) if (np >= 4096)
   for (long i = 0; i < np; ++i)
-    if (p.mass[i] <= limits.minimum_mass || p.temperature[i] < 0.0 || p.v[i].norm() > limits.maximum_speed)
+    if (p.mass[i] <= limits.minimum_mass || p.temperature[i] < 0.0 || p.v[i].norm() > limits.maximum_speed ||
+        (limits.domain && outside_domain(*limits.domain, p.x[i])))
       first = std::min(first, i);
   for (std::size_t i = std::size_t(first); i < p.size(); ++i) {
     std::string reason;
@@ -71,6 +81,15 @@ std::vector<char> apply_particle_limits(const ParticleLimits& limits, const std:
     } else if (p.temperature[i] < 0.0) {
       std::ostringstream s;
       s << "negative temperature " << p.temperature[i] << " K";
+      reason = s.str();
+    }
+    int d_out = -1;
+    if (reason.empty() && limits.domain && outside_domain(*limits.domain, p.x[i], &d_out)) {
+      const bool high = p.x[i][d_out] > limits.domain->upper[d_out];
+      std::ostringstream s;
+      s.precision(17);
+      s << "left the domain through its " << "xyz"[d_out] << (high ? "+" : "-") << " face (x = (" << p.x[i][0] << ", "
+        << p.x[i][1] << ", " << p.x[i][2] << "); Uintah's relocation deletes a particle outside every patch)";
       reason = s.str();
     }
     const double speed = p.v[i].norm();

@@ -7,12 +7,20 @@
 //     <delete_rogue_particles>true; otherwise, if the speed grew during the
 //     step (|v_{n+1}| >= |v_n|), the velocity is scaled back to 0.9 times the
 //     limit, keeping its direction.
+//   * a particle outside the interior domain (in a non-periodic direction)
+//     after its position update: deleted. This is Uintah's and Vaango's
+//     relocation rule (Schedulers/Relocate.cc: a particle found in no patch of
+//     the level is neither kept nor sent, so material leaving through a face,
+//     e.g. the copper of JWLppCuRS2d at its x+ face, leaves the run). A
+//     particle more than one cell beyond the face cannot have got there within
+//     the CFL limit: the step stops with a NumericalFailure before this rule.
 // A deleted particle leaves every column of the SoA (positions, state, the
 // model's history); its mass, momentum and energy leave the sums with it.
 #include <cstddef>
 #include <string>
 #include <vector>
 
+#include "core/grid/Grid.h"
 #include "mpm/Particles.h"
 
 namespace tephra {
@@ -21,7 +29,12 @@ struct ParticleLimits {
   double minimum_mass = 3e-15;       // <minimum_particle_mass> [kg]
   double maximum_speed = 3e105;      // <maximum_particle_velocity> [m/s]
   bool delete_rogue = false;         // <delete_rogue_particles>
+  const Grid* domain = nullptr;      // when set: delete particles outside its interior box (non-periodic d)
 };
+
+// True when x lies outside the interior box [lower, upper] of `domain` in a
+// non-periodic direction (a particle on a face is inside); d_out is that direction.
+bool outside_domain(const Grid& domain, const Vec3& x, int* d_out = nullptr);
 
 // One deleted particle, for the run's log.
 struct DeletedParticle {

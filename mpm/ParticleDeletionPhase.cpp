@@ -9,12 +9,13 @@
 namespace tephra {
 
 // After G2P: clamps or deletes rogue particles, deletes light and negative-
-// temperature ones, and reports each deletion (a warning naming the particle,
+// temperature ones and those that left the domain through a face, and reports each deletion (a warning naming the particle,
 // the material, the step and the reason; the deleted mass is summed in
 // deleted_mass()).
 void MpmComponent::delete_particles(MpmMaterial& m, const std::vector<Vec3>& v_old, int step) {
   const MpmFlags& f = setup_.flags;
-  const ParticleLimits limits{f.minimum_particle_mass, f.maximum_particle_velocity, f.delete_rogue_particles};
+  const ParticleLimits limits{f.minimum_particle_mass, f.maximum_particle_velocity, f.delete_rogue_particles,
+                              &setup_.grid};
   std::vector<DeletedParticle> deleted;
   std::vector<char> keep = apply_particle_limits(limits, v_old, m.particles, deleted);
   if (deleted.empty()) return;

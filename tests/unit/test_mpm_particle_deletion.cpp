@@ -178,6 +178,52 @@ TEST(ParticleDeletion, ComponentReportsTheDeletedMass) {
 }
 
 
+// Uintah's relocation rule (Schedulers/Relocate.cc): a particle found in no
+// patch after its position update is deleted. Interior box [0,1]^3, y periodic.
+TEST(ParticleDeletion, ParticleOutsideTheDomainIsDeletedNamingTheFace) {
+  Grid g;
+  g.lower = Vec3::Zero();
+  g.upper = Vec3::Ones();
+  g.periodic = IntVec3(0, 1, 0);
+  Particles p = numbered(4);
+  p.x[0] = Vec3(0.5, 0.5, 0.5);   // inside
+  p.x[1] = Vec3(1.01, 0.5, 0.5);  // beyond x+: deleted
+  p.x[2] = Vec3(0.5, 1.7, 0.5);   // y is periodic: not a face (wrapped elsewhere)
+  p.x[3] = Vec3(0.5, 0.5, 0.0);   // on the z- face: inside
+  ParticleLimits limits;
+  limits.domain = &g;
+  std::vector<DeletedParticle> deleted;
+  EXPECT_EQ(apply_particle_limits(limits, std::vector<Vec3>(4, Vec3::Zero()), p, deleted),
+            (std::vector<char>{1, 0, 1, 1}));
+  ASSERT_EQ(deleted.size(), 1u);
+  EXPECT_EQ(deleted[0].id, 101);
+  EXPECT_NE(deleted[0].reason.find("left the domain through its x+ face"), std::string::npos) << deleted[0].reason;
+  int d = -1;
+  EXPECT_TRUE(outside_domain(g, Vec3(0.5, 0.5, -1e-12), &d));
+  EXPECT_EQ(d, 2);
+  EXPECT_FALSE(outside_domain(g, Vec3(0.5, -3.0, 1.0)));
+}
+
+// A block moving at 100 m/s towards x+ (interior [0,1], h = 0.25, no extra
+// cells): every particle that crosses the face is deleted at the end of its
+// step, its mass counted in deleted_mass(); the run goes on (Uintah and Vaango
+// run such decks to their end, e.g. JWLppCuRS2d's copper at its x+ face).
+TEST(ParticleDeletion, ParticlesLeavingThroughAFaceAreDeletedAndTheRunGoesOn) {
+  MpmSetup s = free_block();
+  s.materials[0].sources[0].velocity = Vec3(100.0, 0, 0);
+  MpmComponent c(std::move(s));
+  c.initialize();
+  Particles& p = c.materials()[0].particles;
+  const std::size_t n = p.size();
+  const double dt = 1e-3;  // 0.1 m per step, less than a cell
+  double t = 0.0;
+  for (int step = 1; step <= 6 && p.size() > 0; ++step, t += dt) ASSERT_NO_THROW(c.advance(t, dt, step));
+  EXPECT_LT(p.size(), n);  // the leading layers (x = 0.6875, 0.5625 + 0.1 k) have crossed x = 1
+  for (const Vec3& x : p.x) EXPECT_LE(x[0], 1.0);
+  EXPECT_EQ(c.deleted_mass(), 2.0 * double(n - p.size()));  // 2 kg each (free_block)
+  EXPECT_EQ(c.reductions({"TotalMass"}).at("TotalMass")[0], 2.0 * double(p.size()));
+}
+
 // <test_for_neg_temps_mpm> (default true, mpm/MpmFlags.h): a particle at
 // T < 0 K after the step's temperature update stops the run with a
 // NumericalFailure (exit 4) naming the particle id, its material and the step;
