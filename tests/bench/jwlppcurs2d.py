@@ -28,7 +28,7 @@ whose fit_slope, D_CJ and reference points are imported, not copied): the
 largest x of an axis cell (y = z = dx/2) with F >= 0.5, F the reacted
 fraction saved on the reactant (material 1 here: copper is MPM material 0);
 speed: least-squares slope over the outputs with t >= 8 us and
-x_front <= 35 mm (the x+ face is 5 mm further). Wall velocity: the mean
+until the front first passes x = 35 mm (the x+ face is 5 mm further). Wall velocity: the mean
 v_y of the copper particles of the outermost layer (initial y > 7.875 mm)
 within 0.5 mm of x = 10, 20, 30 mm, at every output.
 """
@@ -98,7 +98,14 @@ def analyse(tephra, out, kind):
     front = front_history(tephra, out)
     for t, x in front[::5]:
         print(f"t = {t * 1e6:6.2f} us  front = {x * 1e3 if x is not None else float('nan'):6.2f} mm")
-    pts = [(t, x) for t, x in front if x is not None and t >= 8e-6 - 1e-12 and x <= 0.035]
+    # The outputs from 8 us until the front first passes x = 35 mm (later
+    # outputs are not a front: once the reactant is gone F reads 0 there).
+    pts = []
+    for t, x in front:
+        if x is not None and x > 0.035:
+            break
+        if x is not None and t >= 8e-6 - 1e-12:
+            pts.append((t, x))
     d = fit_slope(pts) if len(pts) > 2 else float("nan")
     print(f"{kind}: D = {d:.0f} m/s over {len(pts)} outputs (t >= 8 us, x_front <= 35 mm); "
           f"D/D_CJ = {d / D_CJ:.4f} (D_CJ = {D_CJ} m/s, 1-D CJ of the products)")
