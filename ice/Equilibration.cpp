@@ -41,6 +41,48 @@ void density(const EquilibrationMaterial& m, std::span<const double> p, std::spa
   }
 }
 
+// Sum over the materials of theta_m = rho_CC_m / rho_m(p, T_m) in cell i, with
+// rho_micro_m(i) set to rho_m(p, T_m).
+double volume_fraction_sum(std::vector<EquilibrationMaterial>& mats, std::size_t i, double p) {
+  double sum = 0.0;
+  for (EquilibrationMaterial& m : mats) {
+    const double T = m.temp[i];
+    double rho = 0.0;
+    density(m, {&p, 1}, {&T, 1}, &i, {&rho, 1});
+    m.rho_micro[i] = rho;
+    sum += m.rho_CC[i] / rho;
+  }
+  return sum;
+}
+
+// The fallback when Newton stalls in a cell, as Uintah's
+// MPMICE::binaryPressureSearch (a bisection between DBL_EPSILON and
+// 1/DBL_EPSILON Pa; the stall it rescues: a near-vacuum guess, e.g.
+// JWLppCuRS2d's copper with traces of gas behind the initiation end at
+// p = 1e-12 Pa, where Newton crawls up by doublings). f(p) = sum theta_m(p) - 1
+// decreases with p (every rho_m(p, T) increases with p), so the root is
+// bracketed when f(lo) > 0 > f(hi); the bisection is on log p (the bracket
+// spans 31 decades). Converged when |f| <= tol, or when the bracket is at the
+// round-off of p (hi - lo <= 4 eps hi: the root is then resolved as far as a
+// double can). Sets press, rho_micro and vol_frac of cell i; false when f
+// does not change sign on the bracket or the bisection runs out of steps.
+bool bisect_cell_pressure(std::vector<EquilibrationMaterial>& mats, std::size_t i, double& press, double tol) {
+  const double eps = std::numeric_limits<double>::epsilon();
+  double lo = eps, hi = 1.0 / eps;
+  if (!(volume_fraction_sum(mats, i, lo) - 1.0 > 0.0) || !(volume_fraction_sum(mats, i, hi) - 1.0 < 0.0)) return false;
+  for (int k = 0; k < 400; ++k) {  // 31 decades to 4 eps: about 60 halvings of log p
+    const double mid = std::sqrt(lo * hi);
+    const double f = volume_fraction_sum(mats, i, mid) - 1.0;
+    if (std::abs(f) <= tol || hi - lo <= 4.0 * eps * hi) {
+      press = mid;
+      for (EquilibrationMaterial& m : mats) m.vol_frac[i] = m.rho_CC[i] / m.rho_micro[i];
+      return true;
+    }
+    (f > 0.0 ? lo : hi) = mid;
+  }
+  return false;
+}
+
 }  // namespace
 
 EquilibrationResult equilibrate_pressure(std::vector<EquilibrationMaterial>& mats, std::span<double> press,
@@ -147,10 +189,13 @@ EquilibrationResult equilibrate_pressure(std::vector<EquilibrationMaterial>& mat
     s.active.resize(kept);
   }
   result.iterations = it;
-  if (!s.active.empty()) {
-    result.converged = false;
-    result.failed_cell = static_cast<long long>(s.active[0]);
-  }
+  // Cells where Newton stalled: Uintah's bisection fallback (bisect_cell_pressure).
+  for (const std::size_t i : s.active)
+    if (!bisect_cell_pressure(mats, i, press[i], tol)) {
+      result.converged = false;
+      result.failed_cell = static_cast<long long>(i);
+      break;
+    }
   for (std::size_t k = 0; k < nm; ++k) {
     const std::span<EosState> st(s.states.data() + k * n, n);
     evaluate(mats[k], mats[k].rho_micro, mats[k].temp, nullptr, st);

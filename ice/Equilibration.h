@@ -10,6 +10,9 @@
 // after the first iteration, so this is Newton on sum theta_m(p) = 1, since
 // dtheta_m/dp = -1/y_m). A step that would make p <= 0 is halved instead.
 // One material needs no iteration: theta = 1, p = p_eos(rho_micro, T).
+// A cell where Newton has not converged in max_iterations falls back to a
+// bisection on log p between DBL_EPSILON and 1/DBL_EPSILON Pa, as Uintah's
+// MPMICE::binaryPressureSearch; only when that fails too is the cell reported.
 #include <span>
 #include <vector>
 

@@ -44,6 +44,29 @@ TEST(IceEquilibration, TwoIdealGasesGiveDaltonsPressure) {
   }
 }
 
+// Newton stopped after 2 iterations from a near-vacuum guess (1e-12 Pa, the
+// stall of JWLppCuRS2d's copper cell at 12.4 us): the bisection fallback
+// (Uintah's MPMICE::binaryPressureSearch) still gives Dalton's pressure, to
+// the tolerance |sum theta - 1| <= 1e-11, i.e. |p/p* - 1| <= 1e-11 here
+// (sum theta = p*/p for ideal gases). A root above the bracket's 1/DBL_EPSILON
+// Pa is reported as not converged, naming the cell.
+TEST(IceEquilibration, BisectionFallbackWhenNewtonStalls) {
+  const IdealGas a(1.4, 717.5), b(1.289, 652.9);
+  std::vector<double> rA = {0.6, 0.00444819, 1e13}, TA = {300, 328.739, 300}, rB = {0.9, 0.0101541, 1.0},
+                      TB = {400, 329.886, 400};
+  std::vector<double> mA = {1.0, 1.0, 1.0}, mB = {1.0, 1.0, 1.0}, thA(3), thB(3), cA(3), cB(3), p = {1e-12, 1e-12, 1e-12};
+  std::vector<EquilibrationMaterial> mats = {{&a, rA, TA, mA, thA, cA}, {&b, rB, TB, mB, thB, cB}};
+  const EquilibrationResult r = equilibrate_pressure(mats, p, 2);
+  EXPECT_FALSE(r.converged);
+  EXPECT_EQ(r.failed_cell, 2);  // p* = 8.6e17 Pa > 1/DBL_EPSILON = 4.5e15 Pa
+  for (int i = 0; i < 2; ++i) {
+    const double exact = rA[i] * 0.4 * 717.5 * TA[i] + rB[i] * 0.289 * 652.9 * TB[i];
+    EXPECT_NEAR(p[i], exact, 1e-11 * exact) << i;
+    EXPECT_NEAR(thA[i] + thB[i], 1.0, 1e-11) << i;
+    EXPECT_NEAR(cA[i], 1.4 * p[i] / mA[i], 1e-9 * cA[i]) << i;  // c^2 = gamma p / rho_micro at the root
+  }
+}
+
 // Two materials, scalar exchange (inventory ch. 24 oracle):
 //   x1' = ((1+b21) x1 + b12 x2) / ((1+b12)(1+b21) - b12 b21), b_mn = dt theta_n K v_m,
 // and the mass-weighted sum M_m x_m (M_m = V theta_m / v_m) is conserved.
