@@ -66,6 +66,20 @@ def extract(tephra, out, var, material, line=None):
     return list(csv.DictReader(text.splitlines()))
 
 
+def until_the_end(front):
+    """The outputs until the front first reaches its largest x (the x+ end):
+    after that the axis cells hold no reactant and F reads 0, so the
+    "front" of later outputs is not a detonation front."""
+    xs = [x for _, x in front if x is not None]
+    if not xs:
+        return front
+    top = max(xs)
+    for k, (_, x) in enumerate(front):
+        if x is not None and x >= top:
+            return front[:k + 1]
+    return front
+
+
 def front_history(tephra, out):
     y = 0.5 * DX
     rows = collections.defaultdict(list)
@@ -202,7 +216,8 @@ def plot_all(tephra, root, png_dir):
                     "T (US)", "WALL RADIAL VELOCITY V_Y (M/S), OUTER COPPER LAYER",
                     [(f"X = {st * 1e3:.0f} MM", colours[k]) for k, st in enumerate(wall)])
     plot_series(os.path.join(png_dir, "jwlppcurs2d-front.png"),
-                [([(t * 1e6, None if x is None else x * 1e3) for t, x in f], colours[k]) for k, f in enumerate(fronts.values())],
+                [([(t * 1e6, None if x is None else x * 1e3) for t, x in until_the_end(f)], colours[k])
+                 for k, f in enumerate(fronts.values())],
                 (0.0, tt), (0.0, 40.0), xt, [5.0 * k for k in range(9)], "T (US)",
                 "DETONATION FRONT X (MM), AXIS CELLS WITH F AT LEAST 0.5",
                 [(kind.upper(), colours[k]) for k, kind in enumerate(fronts)])
