@@ -82,9 +82,11 @@ std::string periodic_deck(const std::string& interp, const std::string& patches)
 
 // 2. Axisymmetric (x = r, y = z): a thick cylinder wall a = 0.5 <= r <= 1
 //    contracting at 2 m/s against an internal pressure ramp (<axisymmetric_side>
-//    load: p R L / N per particle, N over the ranks); symmetry faces r = 0 and
-//    in the axial direction; patches cut at r = 9/16, which the particles
-//    seeded just outside it cross.
+//    load: p R L / N per particle, N over the ranks) and a second
+//    <axisymmetric_side> surface at r = 9/16, on the patch cut (its particles,
+//    within 0.9 dr_p of it, are on both ranks: N is a sum over the ranks);
+//    symmetry faces r = 0 and in the axial direction; the particles seeded
+//    just outside the cut cross it.
 std::string axisymmetric_deck(const std::string& interp) {
   const double h = 1.0 / 16;
   std::ostringstream s;
@@ -98,7 +100,11 @@ std::string axisymmetric_deck(const std::string& interp) {
     << "<PhysicalBC><MPM><pressure><geom_object><cylinder><bottom>[0,0,0]</bottom><top>[0," << 2 * h
     << ",0]</top><radius>0.5</radius><axisymmetric_side>true</axisymmetric_side></cylinder></geom_object>"
     << "<load_curve><id>1</id><time_point><time>0</time><load>0</load></time_point><time_point><time>0.02</time>"
-    << "<load>1e5</load></time_point></load_curve></pressure></MPM></PhysicalBC><Grid><BoundaryConditions>";
+    << "<load>1e5</load></time_point></load_curve></pressure>"
+    << "<pressure><geom_object><cylinder><bottom>[0,0,0]</bottom><top>[0," << 2 * h
+    << ",0]</top><radius>0.5625</radius><axisymmetric_side>true</axisymmetric_side></cylinder></geom_object>"
+    << "<load_curve><id>2</id><time_point><time>0</time><load>5e4</load></time_point></load_curve></pressure>"
+    << "</MPM></PhysicalBC><Grid><BoundaryConditions>";
   for (const char* f : {"x-", "y-", "y+"})
     s << "<Face side=\"" << f << "\"><BCType id=\"all\" var=\"symmetry\" label=\"Symmetric\"></BCType></Face>";
   s << "</BoundaryConditions><Level><Box label=\"1\"><lower>[0,0,0]</lower><upper>[1.125," << 2 * h << "," << h
