@@ -351,7 +351,7 @@ void MpmComponent::apply_loads(double t) {
   PhaseTimers::Scope timer(phase_timers(), "MPM: apply external loads");
   std::vector<Particles*> particles;
   for (MpmMaterial& m : setup_.materials) particles.push_back(&m.particles);
-  apply_particle_loads(setup_.loads, t, setup_.grid.dx, particles);
+  apply_particle_loads(setup_.loads, t, setup_.grid.dx, particles, load_totals());  // N, sum d^2 over the ranks
 }
 
 // One explicit USL step of all materials, in the order of Algorithm 2 of the

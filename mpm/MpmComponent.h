@@ -123,7 +123,7 @@ class MpmComponent final : public Component {
   // whose node boxes hold the node (mpm/RankNodeSums.h; no-ops in one
   // process): MPMICE's own node scatters (T_g, burn sums, pressure force).
   void sum_node_vectors(std::vector<Vec3>& v);
-  void sum_node_doubles(std::vector<double>& v);
+  void sum_node_doubles(std::vector<double>& v, int width = 1);  // width doubles per node
   // A whole-grid copy of a node array (width doubles per node) on every rank
   // (RankNodeSums::whole; a collective; `data` itself in one process).
   std::vector<double> whole_node_array(const std::vector<double>& data, int width) const;
@@ -170,6 +170,7 @@ class MpmComponent final : public Component {
   void set_node_boxes();                   // this step's node boxes of all ranks (a collective)
   void sum_particles_to_grid(NodeGrid& g); // P2G arrays over the ranks (mpm/RankNodeSums.h)
   double sum_over_ranks(double local) const;  // in rank order, the same bits on every rank
+  RankSum load_totals() const;             // the loads' surface totals over the ranks (mpm/loads/RankSum.h)
   void migrate_particles();                // particles to the ranks owning their new patches
   PatchLayout layout_;
   RankNodeSums node_sums_;

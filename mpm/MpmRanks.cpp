@@ -82,9 +82,6 @@ void MpmComponent::check_rank_support() const {
     throw MissingFeature({}, "MPM with " + what + " on more than one MPI rank (issue 7: explicit MPM with the "
                                  "grid BCs, gravity and contact runs on ranks)");
   };
-  if (periodic_.active()) no("periodic boundaries");
-  if (setup_.flags.axisymmetric) no("<axisymmetric>");
-  if (!setup_.loads.empty()) no("<PhysicalBC><MPM> loads");
   if (setup_.flags.pressure_stabilization) no("<do_pressure_stabilization>");
   if (setup_.prescribed) no("<use_prescribed_deformation>");
   for (const MpmMaterial& m : setup_.materials)
@@ -183,6 +180,13 @@ void MpmComponent::set_node_boxes() {
       if (box.empty()) box = own;
       else box = NodeBox{box.lo.cwiseMin(own.lo), box.hi.cwiseMax(own.hi)};
     }
+  // Periodic directions (mpm/PeriodicGrid.h): the aliases of a node lie whole
+  // periods apart, and the folds after each combine add over every alias
+  // set. So a box that holds any node holds the whole periodic direction:
+  // every alias of every node it holds then carries the sums of all ranks
+  // (the other side's image nodes may belong to another rank's particles).
+  for (int d = 0; d < 3; ++d)
+    if (!box.empty() && layout_.level.periodic[d]) box.lo[d] = 0, box.hi[d] = g.n[d];
   node_sums_.set_boxes(box, g.n);
 }
 
@@ -202,14 +206,28 @@ void MpmComponent::sum_node_vectors(std::vector<Vec3>& v) {
   node_sums_.combine({{v.front().data(), 3, -1}});
 }
 
-void MpmComponent::sum_node_doubles(std::vector<double>& v) {
+void MpmComponent::sum_node_doubles(std::vector<double>& v, int width) {
   if (!layout_.distributed || v.empty()) return;
-  node_sums_.combine({{v.data(), 1, -1}});
+  node_sums_.combine({{v.data(), width, -1}});
 }
 
 std::vector<double> MpmComponent::whole_node_array(const std::vector<double>& data, int width) const {
   if (!layout_.distributed) return data;
   return node_sums_.whole(data.data(), width);
+}
+
+// Entry by entry, the partials of all ranks added in rank order (the same bits on every rank).
+RankSum MpmComponent::load_totals() const {
+  if (!layout_.distributed) return {};
+  return [](std::vector<double> partial) {
+    const std::size_t n = partial.size();
+    const std::vector<double> all = all_gather(partial);
+    if (n == 0 || all.size() % n != 0) throw std::logic_error("MPM load totals: ranks gathered other sizes");
+    std::vector<double> total(n, 0.0);
+    for (std::size_t s = 0; s < all.size() / n; ++s)
+      for (std::size_t k = 0; k < n; ++k) total[k] += all[s * n + k];
+    return total;
+  };
 }
 
 double MpmComponent::sum_over_ranks(double local) const {

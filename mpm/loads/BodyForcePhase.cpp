@@ -37,7 +37,7 @@ void MpmComponent::add_heat_flux_heating(double t, int step) {
   const auto& surfaces = setup_.loads.heat_flux;
   std::vector<Particles*> all;
   for (MpmMaterial& m : setup_.materials) all.push_back(&m.particles);
-  const std::vector<long> count = particles_per_surface(surfaces, setup_.grid.dx, all);
+  const std::vector<long> count = particles_per_surface(surfaces, setup_.grid.dx, all, load_totals());  // N over the ranks
   for (MpmMaterial& m : setup_.materials) {
     Particles& p = m.particles;
     m.heating.resize(p.size(), 0.0);

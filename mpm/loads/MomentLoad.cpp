@@ -65,17 +65,21 @@ MomentSurface parse_moment_surface(const DeckNode& bc) {
 }
 
 void add_moment_forces(const std::vector<MomentSurface>& moments, double t, const Vec3& h,
-                       const std::vector<Particles*>& materials) {
-  for (const MomentSurface& s : moments) {
-    // sum_q d_q^2 over the flagged particles of all materials (eq. 1's normalisation).
-    double sum_d2 = 0.0;
+                       const std::vector<Particles*>& materials, const RankSum& ranks) {
+  // sum_q d_q^2 over the flagged particles of all materials (eq. 1's normalisation), over the ranks.
+  std::vector<double> sum_d2(moments.size(), 0.0);
+  for (std::size_t k = 0; k < moments.size(); ++k)
     for (const Particles* p : materials)
       for (std::size_t i = 0; i < p->size(); ++i) {
         const Vec3 X = p->x[i] - p->displacement[i];
-        if (s.on_surface(X, spacing_of(p->psize[i], h))) sum_d2 += s.distance(X) * s.distance(X);
+        const MomentSurface& s = moments[k];
+        if (s.on_surface(X, spacing_of(p->psize[i], h))) sum_d2[k] += s.distance(X) * s.distance(X);
       }
-    if (!(sum_d2 > 0.0)) continue;  // no flagged particle off the neutral plane: no couple can be applied
-    const double scale = s.curve.at(t) / sum_d2;
+  if (!moments.empty()) sum_d2 = total_over_ranks(ranks, std::move(sum_d2));
+  for (std::size_t k = 0; k < moments.size(); ++k) {
+    const MomentSurface& s = moments[k];
+    if (!(sum_d2[k] > 0.0)) continue;  // no flagged particle off the neutral plane: no couple can be applied
+    const double scale = s.curve.at(t) / sum_d2[k];
     const Vec3 e = Vec3::Unit(s.thickness_dir);
     for (Particles* pp : materials) {
       Particles& p = *pp;

@@ -40,6 +40,7 @@
 #include "core/base/Types.h"
 #include "mpm/Particles.h"
 #include "mpm/loads/LoadCurve.h"
+#include "mpm/loads/RankSum.h"
 
 namespace tephra {
 
@@ -62,8 +63,9 @@ struct MomentSurface {
 MomentSurface parse_moment_surface(const DeckNode& moment);
 
 // Adds the moment forces (1) at time t to p.external_force of the flagged
-// particles of `materials` (cell size h); the sums run over all materials.
+// particles of `materials` (cell size h); the sums run over all materials
+// (and, through `ranks`, over the particles of every MPI rank: mpm/loads/RankSum.h).
 void add_moment_forces(const std::vector<MomentSurface>& moments, double t, const Vec3& h,
-                       const std::vector<Particles*>& materials);
+                       const std::vector<Particles*>& materials, const RankSum& ranks = {});
 
 }  // namespace tephra

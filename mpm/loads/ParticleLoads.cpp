@@ -279,7 +279,7 @@ ParticleLoads parse_particle_loads(const DeckNode* physical_bc, bool use_load_cu
 }
 
 std::vector<long> particles_per_surface(const std::vector<PressureSurface>& surfaces, const Vec3& h,
-                                        const std::vector<Particles*>& materials) {
+                                        const std::vector<Particles*>& materials, const RankSum& ranks) {
   std::vector<long> n(surfaces.size(), 0);
   for (const Particles* p : materials)
     for (std::size_t i = 0; i < p->size(); ++i) {
@@ -288,26 +288,22 @@ std::vector<long> particles_per_surface(const std::vector<PressureSurface>& surf
       for (std::size_t k = 0; k < surfaces.size(); ++k)
         if (surfaces[k].on_surface(X, dxpp)) ++n[k];
     }
+  if (!ranks || surfaces.empty()) return n;
+  // Over the MPI ranks: the counts as doubles (exact below 2^53).
+  const std::vector<double> total = total_over_ranks(ranks, std::vector<double>(n.begin(), n.end()));
+  for (std::size_t k = 0; k < n.size(); ++k) n[k] = std::lround(total[k]);
   return n;
 }
 
 std::vector<long> particles_per_pressure_surface(const ParticleLoads& loads, const Vec3& h,
                                                  const std::vector<Particles*>& materials) {
-  std::vector<long> n(loads.pressure.size(), 0);
-  for (const Particles* p : materials)
-    for (std::size_t i = 0; i < p->size(); ++i) {
-      const Vec3 X = p->x[i] - p->displacement[i];
-      const Vec3 dxpp = particle_spacing(p->psize[i], h);
-      for (std::size_t k = 0; k < loads.pressure.size(); ++k)
-        if (loads.pressure[k].on_surface(X, dxpp)) ++n[k];
-    }
-  return n;
+  return particles_per_surface(loads.pressure, h, materials);
 }
 
 void apply_particle_loads(const ParticleLoads& loads, double t, const Vec3& h,
-                          const std::vector<Particles*>& materials) {
-  // Force per particle of each surface: p(t) A / N (Vaango's forcePerParticle).
-  const std::vector<long> count = particles_per_pressure_surface(loads, h, materials);
+                          const std::vector<Particles*>& materials, const RankSum& ranks) {
+  // Force per particle of each surface: p(t) A / N (Vaango's forcePerParticle), N over all ranks.
+  const std::vector<long> count = particles_per_surface(loads.pressure, h, materials, ranks);
   std::vector<double> per_particle(loads.pressure.size(), 0.0);
   for (std::size_t k = 0; k < loads.pressure.size(); ++k)
     if (count[k] > 0) per_particle[k] = loads.pressure[k].curve.at(t) * loads.pressure[k].area / double(count[k]);
@@ -341,7 +337,7 @@ void apply_particle_loads(const ParticleLoads& loads, double t, const Vec3& h,
       p.external_force[i] = f;
     }
   }
-  add_moment_forces(loads.moment, t, h, materials);
+  add_moment_forces(loads.moment, t, h, materials, ranks);
 }
 
 }  // namespace tephra

@@ -122,12 +122,15 @@ ParticleLoads parse_particle_loads(const DeckNode* physical_bc, bool use_load_cu
 
 // Sets p.external_force of every particle of `materials` at time t (cell size h):
 // zero, plus the force regions, plus the pressure surfaces, plus the moments.
+// On MPI ranks `ranks` sums the surfaces' particle counts and the moments'
+// sum d^2 over the ranks (mpm/loads/RankSum.h).
 void apply_particle_loads(const ParticleLoads& loads, double t, const Vec3& h,
-                          const std::vector<Particles*>& materials);
+                          const std::vector<Particles*>& materials, const RankSum& ranks = {});
 
-// Particles on each surface of `surfaces`, summed over `materials`.
+// Particles on each surface of `surfaces`, summed over `materials` (and over
+// the MPI ranks through `ranks`: exact, the counts are integers).
 std::vector<long> particles_per_surface(const std::vector<PressureSurface>& surfaces, const Vec3& h,
-                                        const std::vector<Particles*>& materials);
+                                        const std::vector<Particles*>& materials, const RankSum& ranks = {});
 
 // Particles on each pressure surface, summed over `materials` (Vaango's
 // materialPointsPerLoadCurve).

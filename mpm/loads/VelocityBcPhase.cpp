@@ -2,6 +2,8 @@
 // VelocitySurface): the flagged particles take v(t_n) at the start of the
 // step, and the nodes their stencils reach take v(t_n) after P2G and
 // v(t_{n+1}) with the grid boundary conditions.
+#include <algorithm>
+
 #include "core/base/PhaseTimers.h"
 #include "mpm/MpmComponent.h"
 
@@ -42,16 +44,33 @@ void MpmComponent::find_surface_velocity_nodes(double t) {
       }
     std::vector<std::pair<std::size_t, int>>& nodes = surface_nodes_[mi];
     nodes.clear();
-    if (flagged.size() == 0) continue;
+    // On MPI ranks every rank takes part in the node combine below, flagged particles or not.
+    if (flagged.size() == 0 && !layout_.distributed) continue;
     Stencils st;
     const long bad = compute_stencils(flagged, m.grid, setup_.flags.interpolator, st);
     if (bad >= 0) return;  // interpolate_to_grid already stopped on a particle outside the grid
+    // A node reached by particles of several surfaces takes the highest
+    // surface index (as a particle on several surfaces does): a rule that
+    // does not depend on the particle order, so the ranks can apply it.
     std::vector<int> node_surface(m.grid.count(), -1);
     for (std::size_t q = 0; q < flagged.size(); ++q)
       for (int e = 0; e < st.width; ++e) {
         const std::size_t k = q * std::size_t(st.width) + std::size_t(e);
-        if (st.w[k] > 0.0) node_surface[st.node[k]] = flagged_surface[q];
+        if (st.w[k] > 0.0) node_surface[st.node[k]] = std::max(node_surface[st.node[k]], flagged_surface[q]);
       }
+    if (layout_.distributed) {
+      // A node near a rank cut may be reached by another rank's flagged
+      // particles: count per surface the ranks that flag it (a node sum over
+      // the boxes, mpm/RankNodeSums.h), then the highest surface flagged anywhere.
+      const std::size_t K = setup_.loads.velocity.size();
+      std::vector<double> flags(node_surface.size() * K, 0.0);
+      for (std::size_t g = 0; g < node_surface.size(); ++g)
+        if (node_surface[g] >= 0) flags[g * K + std::size_t(node_surface[g])] = 1.0;
+      sum_node_doubles(flags, int(K));
+      for (std::size_t g = 0; g < node_surface.size(); ++g)
+        for (std::size_t k = 0; k < K; ++k)
+          if (flags[g * K + k] > 0.0) node_surface[g] = std::max(node_surface[g], int(k));
+    }
     for (std::size_t g = 0; g < node_surface.size(); ++g)
       if (node_surface[g] >= 0) nodes.emplace_back(g, node_surface[g]);
     impose_surface_velocities(mi, t, m.grid.velocity);

@@ -1,0 +1,232 @@
+// MPMICE particle migration on MPI ranks (issue 7): MPMICE/advect.ups
+// (decks README A12: 5^3 cells of 0.5 m, the steel block [1, 1.5]^3 in air)
+// cut into patches [5,1,1] (one cell column each), with the block's velocity
+// raised from (10,10,10) to (kVx, 0, 0) m/s so that within the run it moves
+// 0.45 m: the particles (seeded at x = 1.125, 1.375) all cross the cut
+// x = 1.5, where the load balancer puts the rank cut under -np 2 (the run
+// prints the owners). The whole level in this
+// process (keep_whole_level: the 1-rank run) against the patches spread over
+// the ranks, stepped with the same dt.
+//
+// Asserted: every particle on exactly one rank after every step (the counts
+// add up to the total) and, at the end, every id of the 1-rank run exactly
+// once (the gathered blocks are in id order and equal); under -np 2 the
+// particles change rank (all of them: the block crosses the cut whole);
+// every particle field and cell field within the bounds of
+// tests/mpi/test_mpi_mpmice.cpp (1e-11 of the field's largest magnitude,
+// velocities and particle stress 1e-9: see bound_of there) and the .dat sums
+// 1e-12 relative. While the block is inside one rank's patches its nodes
+// are reached by that rank alone (the one-process bits); as it crosses, the
+// nodes around the cut get both ranks' partial sums (round-off).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+
+#include "core/deck/DeckLoader.h"
+#include "core/io/OutputFrame.h"
+#include "core/parallel/Ranks.h"
+#include "core/grid/Loop.h"
+#include "ice/IceFields.h"
+#include "mpmice/MpmIceComponent.h"
+#include "mpmice/SolidBurn.h"
+#include "tests/support/IceRuns.h"
+#include "tests/support/TestPaths.h"
+
+namespace tephra {
+namespace {
+
+constexpr double kVx = 40.0;  // m/s
+
+struct CoupledRun {
+  std::unique_ptr<Deck> deck;
+  std::unique_ptr<MpmIceComponent> c;
+};
+
+CoupledRun start(bool whole) {
+  CoupledRun r;
+  r.deck = load_deck(test::shared_dir() + "/decks/inputs/MPMICE/advect.ups");
+  test::deck_node(r.deck->root, {"Grid", "Level", "Box", "patches"}).text = "[5,1,1]";
+  test::deck_node(r.deck->root, {"MaterialProperties", "MPM", "material", "geom_object", "velocity"}).text =
+      "[" + std::to_string(kVx) + ",0,0]";
+  r.deck->root.finalize_parents();
+  r.c = make_mpmice_component(*r.deck);
+  if (whole) r.c->keep_whole_level();
+  r.c->initialize();
+  return r;
+}
+
+double relative_difference(const std::vector<double>& a, const std::vector<double>& b) {
+  EXPECT_EQ(a.size(), b.size());
+  double scale = 0, diff = 0;
+  for (std::size_t i = 0; i < std::min(a.size(), b.size()); ++i) {
+    scale = std::max(scale, std::abs(a[i]));
+    diff = std::max(diff, std::abs(a[i] - b[i]));
+  }
+  return scale > 0 ? diff / scale : diff;
+}
+
+double bound_of(const std::string& label) {  // as tests/mpi/test_mpi_mpmice.cpp
+  return label == "p.velocity" || label == "p.stress" || label == "vel_CC" ? 1e-9 : 1e-11;
+}
+
+std::size_t particles_here(const MpmIceComponent& c) {
+  std::size_t n = 0;
+  for (const MpmMaterial& m : c.mpm().materials()) n += m.particles.size();
+  return n;
+}
+
+std::set<long long> own_ids(const MpmIceComponent& c) {
+  std::set<long long> ids;
+  for (const MpmMaterial& m : c.mpm().materials()) ids.insert(m.particles.id.begin(), m.particles.id.end());
+  return ids;
+}
+
+TEST(MpiMpmIceMigration, BlockCrossingTheRankCutKeepsEveryParticleOnce) {
+  CoupledRun whole = start(true);
+  CoupledRun ranks = start(false);
+  EXPECT_EQ(ranks.c->mpm().layout().distributed, world_ranks().size > 1);
+  const std::size_t total = particles_here(*whole.c);
+  const std::set<long long> start_ids = own_ids(*ranks.c);
+  std::set<long long> ever_left;
+  const DeckNode& time = whole.deck->root.require_child("Time");
+  const double mult = time.get_double("timestep_multiplier"), delt_init = time.get_double("delt_init", 0.0);
+  double t = 0, worst_dt = 0;
+  int step = 0;
+  const double t_end = 0.45 / kVx;  // 0.45 m: every particle (x0 = 1.125, 1.375) passes x = 1.5, none x = 2
+  while (t < t_end) {
+    const double dt = step == 0 && delt_init > 0 ? delt_init : mult * whole.c->stable_timestep();
+    worst_dt = std::max(worst_dt, std::abs(ranks.c->stable_timestep() / whole.c->stable_timestep() - 1));
+    ++step;
+    whole.c->advance(t, dt, step);
+    ranks.c->advance(t, dt, step);
+    t += dt;
+    double sum = 0;
+    for (double n : all_gather(std::vector<double>{double(particles_here(*ranks.c))})) sum += n;
+    EXPECT_EQ(sum, double(total)) << "step " << step;
+    const std::set<long long> now = own_ids(*ranks.c);
+    for (long long id : start_ids)
+      if (!now.count(id)) ever_left.insert(id);
+  }
+  EXPECT_LE(worst_dt, 1e-12);
+  double migrated = 0;
+  for (double l : all_gather(std::vector<double>{double(ever_left.size())})) migrated += l;
+  OutputFrame a, b;
+  std::set<std::string> labels = {"p.velocity", "p.stress", "p.mass", "p.temperature", "press_CC",
+                                  "rho_CC",     "vel_CC",   "temp_CC", "sp_vol_CC"};
+  whole.c->fill_output(labels, a);
+  ranks.c->fill_output(labels, b);
+  double worst = 0;
+  ASSERT_EQ(a.particles.size(), b.particles.size());
+  for (std::size_t k = 0; k < a.particles.size(); ++k) {
+    const ParticleBlock& x = a.particles[k];
+    const ParticleBlock& y = b.particles[k];
+    EXPECT_EQ(x.id.size(), total);
+    EXPECT_EQ(x.id, y.id) << "every id exactly once";
+    std::vector<double> px, py;
+    for (const Vec3& v : x.position) px.insert(px.end(), v.data(), v.data() + 3);
+    for (const Vec3& v : y.position) py.insert(py.end(), v.data(), v.data() + 3);
+    const double dx = relative_difference(px, py);
+    EXPECT_LE(dx, 1e-11) << "p.x";
+    worst = std::max(worst, dx);
+    for (std::size_t f = 0; f < std::min(x.fields.size(), y.fields.size()); ++f) {
+      const double d = relative_difference(x.fields[f].values, y.fields[f].values);
+      EXPECT_LE(d, bound_of(x.fields[f].label)) << x.fields[f].label;
+      worst = std::max(worst, d);
+    }
+  }
+  ASSERT_EQ(a.grid_fields.size(), b.grid_fields.size());
+  for (std::size_t k = 0; k < a.grid_fields.size(); ++k) {
+    const FieldArray& x = a.grid_fields[k].data;
+    const double d = relative_difference(x.values, b.grid_fields[k].data.values);
+    EXPECT_LE(d, bound_of(x.label)) << x.label << " material " << x.material;
+    worst = std::max(worst, d);
+  }
+  for (const auto& [label, v] : whole.c->reductions({"TotalMass", "KineticEnergy"})) {
+    const double d = relative_difference(v, ranks.c->reductions({label})[label]);
+    EXPECT_LE(d, 1e-12) << label;
+    worst = std::max(worst, d);
+  }
+  if (world_ranks().size > 1) EXPECT_EQ(migrated, double(total)) << "the whole block crosses the rank cut";
+  if (world_ranks().is_root()) {
+    std::printf("[ mpi-mpmice-migration ] advect.ups v = (%g,0,0), %d steps to t = %.4g on %d rank(s): worst %.3g, "
+                "%g of %zu particles changed rank; owners:",
+                kVx, step, t, world_ranks().size, worst, migrated, total);
+    for (int o : ranks.c->mpm().layout().owner) std::printf(" %d", o);
+    std::printf("\n");
+  }
+}
+
+// DDT1's crack-history lookup on ranks (<useCrackModel>: the largest crackRad
+// of the reactant's particles in each cell, SolidBurnSupport::
+// particle_history_max, read by DDT1 at the cell itself only). On ranks each
+// rank looks at its own particles and fills its own cells; that is complete
+// because a particle lives on the rank owning the patch of its cell
+// (mpm/MpmRanks.cpp, migrate_particles after every step). Checked on the
+// block above at t = 0.2 m / kVx, when it straddles the cut x = 1.5 (the
+// particles seeded at x = 1.375 have crossed it, those at 1.125 have not):
+// advect's comp_neo_hook_plastic history column plasticStrain is set to
+// 1 + 1e-3 id on every particle of both runs, and every own cell of every rank
+// must hold exactly the whole run's maximum of that cell (a max is exact: no
+// round-off), and the cells holding particles must be on both ranks under -np 2.
+TEST(MpiMpmIceMigration, CrackHistoryLookupGivesTheOneRankCellMaxima) {
+  CoupledRun whole = start(true);
+  CoupledRun ranks = start(false);
+  const DeckNode& time = whole.deck->root.require_child("Time");
+  const double mult = time.get_double("timestep_multiplier"), delt_init = time.get_double("delt_init", 0.0);
+  double t = 0;
+  int step = 0;
+  while (t < 0.2 / kVx) {
+    const double dt = step == 0 && delt_init > 0 ? delt_init : mult * whole.c->stable_timestep();
+    ++step;
+    whole.c->advance(t, dt, step);
+    ranks.c->advance(t, dt, step);
+    t += dt;
+  }
+  auto lookup = [](CoupledRun& r) {
+    MpmMaterial& m = r.c->mpm().materials()[0];
+    const std::vector<HistoryVariable> h = m.model->history();
+    std::size_t k = h.size();
+    for (std::size_t i = 0; i < h.size(); ++i)
+      if (h[i].name == "plasticStrain") k = i;
+    EXPECT_LT(k, h.size()) << "advect's solid model has no plasticStrain";
+    for (std::size_t p = 0; p < m.particles.size(); ++p) m.particles.history[k][p] = 1.0 + 1e-3 * double(m.particles.id[p]);
+    CellScalars out(r.c->ice().grid(), 0);
+    EXPECT_TRUE(r.c->burn_support().particle_history_max(0, "plasticStrain", out));
+    return out;
+  };
+  const CellScalars a = lookup(whole), b = lookup(ranks);
+  const Grid& gw = whole.c->ice().grid();
+  const Grid& gr = ranks.c->ice().grid();
+  int mismatched = 0, cells_with_particles = 0;
+  for (std::size_t pi = 0; pi < gr.patches.size(); ++pi) {
+    std::size_t wi = gw.patches.size();
+    for (std::size_t q = 0; q < gw.patches.size(); ++q)
+      if (gw.patches[q].id == gr.patches[pi].id) wi = q;
+    ASSERT_LT(wi, gw.patches.size());
+    for_each_cell_serial(gr.patches[pi].cells(), [&](int i, int j, int k) {
+      if (b[pi](i, j, k) != a[wi](i, j, k)) ++mismatched;
+      if (b[pi](i, j, k) > 0) ++cells_with_particles;
+    });
+  }
+  EXPECT_EQ(mismatched, 0) << "own cells whose maximum differs from the 1-rank one";
+  const std::vector<double> per_rank = all_gather(std::vector<double>{double(cells_with_particles)});
+  int whole_cells = 0;
+  for (std::size_t q = 0; q < gw.patches.size(); ++q)
+    for_each_cell_serial(gw.patches[q].cells(), [&](int i, int j, int k) { whole_cells += a[q](i, j, k) > 0; });
+  double sum = 0;
+  for (double n : per_rank) sum += n;
+  EXPECT_EQ(sum, double(whole_cells)) << "every cell with particles on exactly one rank";
+  if (world_ranks().size > 1)
+    for (double n : per_rank) EXPECT_GT(n, 0) << "the block straddles the rank cut";
+  if (world_ranks().is_root()) {
+    std::printf("[ mpi-mpmice-migration ] crack-history lookup at t = %.4g: %d cells with particles, per rank:",
+                t, whole_cells);
+    for (double n : per_rank) std::printf(" %g", n);
+    std::printf("\n");
+  }
+}
+
+}  // namespace
+}  // namespace tephra
