@@ -38,6 +38,7 @@ class MpmIceComponent final : public Component, private MpmCoupling, private Sol
   // MPI tests), before initialize(); MPM's layout is then ICE's too.
   void keep_whole_level() { mpm_->keep_whole_level(); }
   const MpmComponent& mpm() const { return *mpm_; }
+  MpmComponent& mpm() { return *mpm_; }  // (tests: perturb the particles of a reference run)
   const IceComponent& ice() const { return *ice_; }
   // Particle pressure p_p - p_ref of MPM material m from the last step (step 7).
   const std::vector<double>& particle_pressure(std::size_t m) const { return particle_pressure_[m]; }
