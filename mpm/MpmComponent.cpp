@@ -501,9 +501,17 @@ void MpmComponent::advance(double t, double dt, int step) {
         std::swap(m.grid.velocity_star, musl_velocity_[i]);  // l_p and contact read g.velocity_star
       }
       if (contact) exchange_momentum(ContactStage::Integrated, t, dt);
-      for (std::size_t i = 0; i < mats.size(); ++i)  // v*_g back where USL is stable for the node
+      for (std::size_t i = 0; i < mats.size(); ++i) {  // v*_g back where USL is stable for the node
         keep_stable_usl_nodes(mats[i].grid, fill_limit[i], cell_volume,
                               musl_velocity_[i], mats[i].grid.velocity_star);
+        // The node-by-node choice can pick MUSL at an extra node (little volume)
+        // and v*_g at its mirror node (full): the grid BCs again, so that the
+        // extra nodes mirror the velocity l_p reads. With it a symmetric run is
+        // the mirror problem without faces (AxisAligned: equal to the periodic
+        // run on [-1, 1]^3; docs/mpm-convergence.md "Session 16").
+        mats[i].bcs.apply(mats[i].grid, mats[i].grid.velocity_star);
+        if (velocity_surfaces) impose_surface_velocities(i, t + dt, mats[i].grid.velocity_star);
+      }
     }
     for (std::size_t i = 0; i < mats.size(); ++i) {
       MpmMaterial& m = mats[i];

@@ -71,6 +71,24 @@ MmsRunResult run_axis_aligned(const MmsRunOptions& o) {
     child(box, "upper").text = text;
   }
   DeckNode& mat = child(child(child(root, "MaterialProperties"), "MPM"), "material");
+  if (o.periodic_mirror) {
+    const std::string c2 = std::to_string(2 * cells);
+    child(box, "resolution").text = "[" + c2 + "," + c2 + "," + c2 + "]";
+    child(box, "lower").text = "[-1,-1,-1]";
+    child(box, "extraCells").text = "[0,0,0]";
+    DeckNode& level = child(child(root, "Grid"), "Level");
+    DeckNode per = child(box, "extraCells");
+    per.name = "periodic";
+    per.text = "[1,1,1]";
+    per.children.clear();
+    level.children.push_back(per);
+    DeckNode& grid = child(root, "Grid");
+    grid.children.erase(std::remove_if(grid.children.begin(), grid.children.end(),
+                                       [](const DeckNode& n) { return n.name == "BoundaryConditions"; }),
+                        grid.children.end());
+    DeckNode& block = child(child(mat, "geom_object"), "box");
+    child(block, "min").text = "[-1,-1,-1]";
+  }
   const std::string r = std::to_string(particles_per_cell_dir);
   child(child(mat, "geom_object"), "res").text = "[" + r + "," + r + "," + (o.planar ? std::string("1") : r) + "]";
   const DeckNode& time = root.require_child("Time");
