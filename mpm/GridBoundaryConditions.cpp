@@ -109,15 +109,24 @@ void GridBoundaryConditions::apply(const NodeGrid& g, std::vector<Vec3>& velocit
       for_face(f, [&](Vec3& v, int) { v = face[f].value; });
       if (set_extra_nodes) for_extra(f, [&](Vec3& v, const Vec3&, int) { v = face[f].value; });
     }
+  // Symmetry: first v_n = 0 on the face nodes of every symmetry face, then
+  // the extra nodes as mirrors. In that order, a mirror copies face nodes of
+  // the other faces that already hold their own condition: the extra node
+  // (x = -h, y = 0) beyond x- copies (x = +h, y = 0) after the y- face set its
+  // v_y = 0. (Face by face, the x- mirror copied v_y of that node before the
+  // y- face zeroed it, so the extra nodes along the edge kept the free
+  // node's normal velocity: a spurious axial motion of the first particle
+  // column at the axis of axisymmetric 3rdorderBS runs, h-independent;
+  // docs/mpm-convergence.md "Axisymmetric 3rdorderBS".)
   for (int f = 0; f < 6; ++f)
-    if (face[f].kind == FaceVelocityBC::Kind::Symmetry) {
-      for_face(f, [&](Vec3& v, int d) { v[d] = 0.0; });
-      if (set_extra_nodes)
+    if (face[f].kind == FaceVelocityBC::Kind::Symmetry) for_face(f, [&](Vec3& v, int d) { v[d] = 0.0; });
+  if (set_extra_nodes)
+    for (int f = 0; f < 6; ++f)
+      if (face[f].kind == FaceVelocityBC::Kind::Symmetry)
         for_extra(f, [&](Vec3& v, const Vec3& mirror, int d) {
           v = mirror;
           v[d] = -mirror[d];
         });
-    }
 }
 
 }  // namespace tephra

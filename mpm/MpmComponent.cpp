@@ -24,6 +24,12 @@
 
 namespace tephra {
 
+namespace {
+// Directions whose symmetry faces fold (mpm/SymmetryFold.h): all three, or r and z
+// when axisymmetric (the hoop faces' two node planes carry the hoop weights).
+int fold_dims(const MpmFlags& flags) { return flags.axisymmetric ? 2 : 3; }
+}  // namespace
+
 MpmComponent::MpmComponent(MpmSetup setup) : setup_(std::move(setup)) {
   const Grid& g = setup_.grid;
   // Ghost node layers of the periodic directions (mpm/PeriodicGrid.h; none there for linear).
@@ -166,8 +172,8 @@ void MpmComponent::interpolate_to_grid(MpmMaterial& m, int step, const char* pha
   sum_particles_to_grid(m.grid);  // over the MPI ranks (mpm/MpmRanks.cpp; no-op in one process)
   fold_particle_sums(periodic_, m.grid);  // periodic aliases share the sums
   // Symmetry faces as mirrors: extra-cell sums onto their mirror nodes (mpm/SymmetryFold.h;
-  // not for axisymmetric runs, whose r = 0 axis is not a plane mirror of the weights).
-  if (!setup_.flags.axisymmetric) fold_symmetry_particle_sums(m.bcs, m.grid);
+  // axisymmetric runs: the r and z faces, not the hoop faces).
+  fold_symmetry_particle_sums(m.bcs, m.grid, fold_dims(setup_.flags));
   m.bcs.apply(m.grid, m.grid.velocity);
   copy_from_canonical(periodic_, m.grid.velocity);  // the ghosts follow their images
 }
@@ -199,7 +205,7 @@ void MpmComponent::internal_force(MpmMaterial& m, bool scattered) {
   else if (!scattered) compute_internal_force(m.particles, m.stencils, m.grid);
   sum_node_vectors(m.grid.internal_force);  // over the MPI ranks
   fold_internal_force(periodic_, m.grid);
-  if (!setup_.flags.axisymmetric) fold_symmetry_internal_force(m.bcs, m.grid);
+  fold_symmetry_internal_force(m.bcs, m.grid, fold_dims(setup_.flags));
 }
 
 // sigma_{n+1}, c, W, history from (F_n, F_{n+1}, l, sigma_n) (Alg. 11); V_{n+1} = J V0 (Alg. 9).
@@ -488,16 +494,24 @@ void MpmComponent::advance(double t, double dt, int step) {
                                          periodic_.active() ? &periodic_.canonical : nullptr, musl_velocity_[i]);
         }
         sum_node_vectors(musl_velocity_[i]);  // over the MPI ranks (divided by the global m_g already)
-        if (!setup_.flags.axisymmetric) fold_symmetry_velocity(m.bcs, m.grid, musl_velocity_[i]);
+        fold_symmetry_velocity(m.bcs, m.grid, musl_velocity_[i], fold_dims(setup_.flags));
         m.bcs.apply(m.grid, musl_velocity_[i]);
         copy_from_canonical(periodic_, musl_velocity_[i]);
         if (velocity_surfaces) impose_surface_velocities(i, t + dt, musl_velocity_[i]);
         std::swap(m.grid.velocity_star, musl_velocity_[i]);  // l_p and contact read g.velocity_star
       }
       if (contact) exchange_momentum(ContactStage::Integrated, t, dt);
-      for (std::size_t i = 0; i < mats.size(); ++i)  // v*_g back where USL is stable for the node
+      for (std::size_t i = 0; i < mats.size(); ++i) {  // v*_g back where USL is stable for the node
         keep_stable_usl_nodes(mats[i].grid, fill_limit[i], cell_volume,
                               musl_velocity_[i], mats[i].grid.velocity_star);
+        // The node-by-node choice can pick MUSL at an extra node (little volume)
+        // and v*_g at its mirror node (full): the grid BCs again, so that the
+        // extra nodes mirror the velocity l_p reads. With it a symmetric run is
+        // the mirror problem without faces (AxisAligned: equal to the periodic
+        // run on [-1, 1]^3; docs/mpm-convergence.md "Session 16").
+        mats[i].bcs.apply(mats[i].grid, mats[i].grid.velocity_star);
+        if (velocity_surfaces) impose_surface_velocities(i, t + dt, mats[i].grid.velocity_star);
+      }
     }
     for (std::size_t i = 0; i < mats.size(); ++i) {
       MpmMaterial& m = mats[i];

@@ -4,8 +4,8 @@ namespace tephra {
 
 namespace {
 
-bool active(const GridBoundaryConditions& bcs, const NodeGrid& g, int f) {
-  return bcs.set_extra_nodes && bcs.face[f].kind == FaceVelocityBC::Kind::Symmetry && g.extra[f / 2] > 0;
+bool active(const GridBoundaryConditions& bcs, const NodeGrid& g, int f, int dims = 3) {
+  return f / 2 < dims && bcs.set_extra_nodes && bcs.face[f].kind == FaceVelocityBC::Kind::Symmetry && g.extra[f / 2] > 0;
 }
 
 // Visits the pairs (extra node e, mirror node m) of face f, k = 1..extra layers,
@@ -54,9 +54,9 @@ void fold_field(const NodeGrid& g, int f, std::vector<T>& q) {
 
 }  // namespace
 
-void fold_symmetry_particle_sums(const GridBoundaryConditions& bcs, NodeGrid& g) {
+void fold_symmetry_particle_sums(const GridBoundaryConditions& bcs, NodeGrid& g, int dims) {
   bool any = false;
-  for (int f = 0; f < 6; ++f) any = any || active(bcs, g, f);
+  for (int f = 0; f < 6; ++f) any = any || active(bcs, g, f, dims);
   if (!any) return;
   const bool stress = !g.stress.empty();  // NodeGrid::node_stress
   const long nodes = long(g.count());  // node-wise loops, threaded: the same bits for any thread count
@@ -66,7 +66,7 @@ void fold_symmetry_particle_sums(const GridBoundaryConditions& bcs, NodeGrid& g)
     if (stress) g.stress[n] *= g.volume[n];
   }
   for (int f = 0; f < 6; ++f) {
-    if (!active(bcs, g, f)) continue;
+    if (!active(bcs, g, f, dims)) continue;
     fold_field(g, f, g.mass);
     fold_field(g, f, g.volume);
     fold_field(g, f, g.velocity);
@@ -85,21 +85,22 @@ void fold_symmetry_scalar(const GridBoundaryConditions& bcs, const NodeGrid& g, 
     if (active(bcs, g, f)) fold_field(g, f, q);
 }
 
-void fold_symmetry_internal_force(const GridBoundaryConditions& bcs, NodeGrid& g) {
+void fold_symmetry_internal_force(const GridBoundaryConditions& bcs, NodeGrid& g, int dims) {
   for (int f = 0; f < 6; ++f)
-    if (active(bcs, g, f)) fold_field(g, f, g.internal_force);
+    if (active(bcs, g, f, dims)) fold_field(g, f, g.internal_force);
 }
 
-void fold_symmetry_velocity(const GridBoundaryConditions& bcs, const NodeGrid& g, std::vector<Vec3>& velocity) {
+void fold_symmetry_velocity(const GridBoundaryConditions& bcs, const NodeGrid& g, std::vector<Vec3>& velocity,
+                            int dims) {
   bool any = false;
-  for (int f = 0; f < 6; ++f) any = any || active(bcs, g, f);
+  for (int f = 0; f < 6; ++f) any = any || active(bcs, g, f, dims);
   if (!any) return;
   // velocity = P / m_folded with P the unfolded momentum sum: P = velocity m_folded.
   const long nodes = long(g.count());  // node-wise loops, threaded: the same bits for any thread count
 #pragma omp parallel for schedule(static) if (nodes >= 4096)
   for (long n = 0; n < nodes; ++n) velocity[n] *= g.mass[n];
   for (int f = 0; f < 6; ++f)
-    if (active(bcs, g, f)) fold_field(g, f, velocity);
+    if (active(bcs, g, f, dims)) fold_field(g, f, velocity);
 #pragma omp parallel for schedule(static) if (nodes >= 4096)
   for (long n = 0; n < nodes; ++n) velocity[n] = g.mass[n] > 0.0 ? Vec3(velocity[n] / g.mass[n]) : Vec3::Zero();
 }

@@ -23,6 +23,15 @@
 // (R_x R_y, ...). The face node is its own mirror (its sums double,
 // their ratios do not change) and is left alone. Nothing happens without
 // extra cells or when the BCs do not set the extra nodes.
+//
+// The fold is the Galerkin form of the mirrored velocity space, whatever the
+// weights: the BCs set v_e = R v_m, so G2P reads v(x) = S_m(x) v_m + S_e(x) R v_m
+// and the basis function of the unknown v_m is S_m + S_e R; P2G and the
+// internal force must use its transpose, which is the fold above. That holds
+// for the r-weighted axisymmetric weights too (the image of a ring across the
+// axis r = 0 is the same ring in the meridian plane, across r = a a mirror
+// wall): axisymmetric runs fold the in-plane faces (dims = 2: x = r, y = z)
+// and not the hoop (z) faces, whose two node planes carry the hoop weights.
 #include <vector>
 
 #include "core/base/Types.h"
@@ -32,12 +41,14 @@
 namespace tephra {
 
 // mass, volume, momentum (velocity x mass), V sigma and the external force.
-void fold_symmetry_particle_sums(const GridBoundaryConditions& bcs, NodeGrid& g);
+// dims: fold the faces of the first dims directions (3; 2 for axisymmetric runs).
+void fold_symmetry_particle_sums(const GridBoundaryConditions& bcs, NodeGrid& g, int dims = 3);
 // The internal force.
-void fold_symmetry_internal_force(const GridBoundaryConditions& bcs, NodeGrid& g);
+void fold_symmetry_internal_force(const GridBoundaryConditions& bcs, NodeGrid& g, int dims = 3);
 // A P2G velocity field v = (sum m_p v_p S)/m_g whose m_g is already folded:
 // folds the momentum v m_g (unfolded sum) and divides again.
-void fold_symmetry_velocity(const GridBoundaryConditions& bcs, const NodeGrid& g, std::vector<Vec3>& velocity);
+void fold_symmetry_velocity(const GridBoundaryConditions& bcs, const NodeGrid& g, std::vector<Vec3>& velocity,
+                            int dims = 3);
 // One extensive node sum q (of g's node layout), folded as
 // fold_symmetry_particle_sums folds g.mass: the same faces, in the same order.
 void fold_symmetry_scalar(const GridBoundaryConditions& bcs, const NodeGrid& g, std::vector<double>& q);

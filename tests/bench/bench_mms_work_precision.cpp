@@ -34,6 +34,8 @@ int main(int argc, char** argv) {
   o.end_time = argc > 1 ? std::atof(argv[1]) : 0.005;
   o.particles_per_cell_dir = argc > 2 ? std::atoi(argv[2]) : 1;
   o.timestep_multiplier = argc > 3 ? std::atof(argv[3]) : 0.0;
+  // TEPHRA_MMS_PERIODIC_MIRROR=1: AxisAligned on [-1, 1]^3, periodic, no faces (MmsRunOptions::periodic_mirror).
+  o.periodic_mirror = std::getenv("TEPHRA_MMS_PERIODIC_MIRROR") != nullptr;
   const auto interps = split(argc > 4 ? argv[4] : "linear,gimp,cpdi,3rdorderBS");
   const auto cells = split(argc > 5 ? argv[5] : "8,16,32");
   std::FILE* csv = std::fopen("mms_work_precision.csv", "w");

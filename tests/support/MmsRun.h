@@ -29,6 +29,12 @@ struct MmsRunOptions {
   // error of the particles by their distance (in x cells) to the curved
   // faces R = ring_inner, ring_outer: [0,1), [1,2), [2,3), >= 3 cells.
   double ring_inner = 0.0, ring_outer = 0.0;
+  // AxisAligned only: the mirror-extended problem without boundaries. The
+  // body and grid become [-1, 1]^3, periodic in all directions (no extra
+  // cells, no BCs), with 2 cells per cell of the unit cube: u_i = A sin(pi X_i)
+  // is odd about X_i = 0 and 1, so this is the problem the symmetry faces
+  // stand for, with no face at all.
+  bool periodic_mirror = false;
 };
 
 struct MmsRunResult {
