@@ -1,7 +1,9 @@
 // Stress updates per second of every registered solid constitutive model (the contract
 // tests' sample parameters, tests/support/SolidModelDriver.h) and of the metal-plasticity
-// compositions (elastic_plastic / elastic_plastic_hp with J2 linear, Johnson-Cook, MTS,
-// Gurson, Prager kinematic hardening), on one core, through ConstitutiveModel::update over
+// compositions (elastic_plastic / elastic_plastic_hp with J2 and every registered flow law,
+// tests/support/FlowSamples.h; Prager and Armstrong-Frederick kinematic hardening; Gurson and
+// Rousselier porous yield) and visco_plastic with the SUVIC-I ice of VT §10.8 (inelastic from
+// the first step), on one core, through ConstitutiveModel::update over
 // a span of points: the cost per particle-step a model adds to the MPM step.
 //
 // Path: isochoric compression plus shear, L = r [diag(-1, 1/2, 1/2) + 0.3 (e1 e2^T + e2 e1^T)],
@@ -23,6 +25,7 @@
 #include <Eigen/Core>
 
 #include "core/grid/Loop.h"
+#include "tests/support/FlowSamples.h"
 #include "tests/support/SolidModelDriver.h"
 
 using namespace tephra;
@@ -35,20 +38,12 @@ struct Case {
   ConstitutiveModelP model;
 };
 
-MapModelParameters metal(const char* flow) {
+MapModelParameters metal(const std::string& flow) {
   MapModelParameters p({{"bulk_modulus", 129e9}, {"shear_modulus", 46e9}, {"isothermal", 1.0},
                         {"coeff_thermal_expansion", 0.0}, {"tolerance", 1e-12}, {"evolve_porosity", 0.0},
                         {"evolve_damage", 0.0}});
   p.add_block("yield_condition", "von_mises");
-  const std::string f = flow;
-  if (f == "linear") p.add_block("flow_model", "linear", {{"sigma_0", 200e6}, {"K", 1e9}});
-  if (f == "johnson_cook") p.add_block("flow_model", "johnson_cook", {{"A", 90e6}, {"B", 292e6}, {"C", 0.025}, {"n", 0.31}, {"m", 1.09}});
-  if (f == "mts")  // ETP copper (decks MaterialData/MTSPlasticETPCu.xml)
-    p.add_block("flow_model", "mts_model",
-                {{"sigma_a", 40e6}, {"mu_0", 47.7e9}, {"D", 3.0e9}, {"T_0", 180}, {"koverbcubed", 0.823e6},
-                 {"g_0i", 0}, {"g_0e", 1.6}, {"edot_0i", 0}, {"edot_0e", 1e7}, {"p_i", 0}, {"q_i", 0},
-                 {"p_e", 0.667}, {"q_e", 1}, {"sigma_i", 0}, {"a_0", 2390e6}, {"a_1", 12e6}, {"a_2", 1.696e6},
-                 {"a_3", 0}, {"theta_IV", 0}, {"alpha", 2}, {"edot_es0", 1e7}, {"g_0es", 0.2625}, {"sigma_es0", 770e6}});
+  p.add_block("flow_model", flow, test::flow_constants().at(flow));
   p.enclosing = {{"melt_temp", 1356.0}, {"specific_heat", 414.0}, {"density", 8930.0}};
   return p;
 }
@@ -56,18 +51,30 @@ MapModelParameters metal(const char* flow) {
 std::vector<Case> cases() {
   std::vector<Case> c;
   for (const std::string& t : constitutive_model_types()) c.push_back({t + " (sample)", test::make_sample_model(t)});
+  // SUVIC-I with the seed deck's ice (Vaango's defaults, R_0 = 0): inelastic on every step.
+  MapModelParameters ice({{"shear_modulus", 3.52e9}, {"bulk_modulus", 8.9e9}});
+  ice.enclosing = {{"specific_heat", 2093.0}};
+  ice.add_block("viscoplastic_flow_model", "suvic_i");
+  c.push_back({"visco_plastic suvic_i ice", create_constitutive_model("visco_plastic", ice)});
   for (const char* type : {"elastic_plastic", "elastic_plastic_hp"}) {
     const std::string T = type;
-    c.push_back({T + " J2 linear", create_constitutive_model(type, metal("linear"))});
-    c.push_back({T + " J2 johnson_cook", create_constitutive_model(type, metal("johnson_cook"))});
-    c.push_back({T + " J2 mts", create_constitutive_model(type, metal("mts"))});
+    for (const auto& [flow, constants] : test::flow_constants())
+      c.push_back({T + " J2 " + flow, create_constitutive_model(type, metal(flow))});
     auto k = metal("linear");
     k.add_block("kinematic_hardening_model", "prager", {{"hardening_modulus", 1e9}});
     c.push_back({T + " J2 linear + prager", create_constitutive_model(type, k)});
+    auto af = metal("linear");
+    af.add_block("kinematic_hardening_model", "armstrong_frederick",
+                 {{"hardening_modulus_1", 5e9}, {"hardening_modulus_2", 20.0}});
+    c.push_back({T + " J2 linear + armstrong_frederick", create_constitutive_model(type, af)});
     auto g = metal("linear");
     g.add_block("yield_condition", "gurson", {{"q1", 1.5}, {"q2", 1.0}, {"q3", 2.25}, {"k", 4.0}, {"f_c", 0.05}});
     g.values["initial_mean_porosity"] = 0.005;
     c.push_back({T + " gurson linear", create_constitutive_model(type, g)});
+    auto r = metal("linear");
+    r.add_block("yield_condition", "rousselier", {{"D", 2.0}, {"sigma_1", 300e6}});
+    r.values["initial_mean_porosity"] = 0.005;
+    c.push_back({T + " rousselier linear", create_constitutive_model(type, r)});
   }
   return c;
 }
