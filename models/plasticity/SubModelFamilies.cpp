@@ -6,13 +6,15 @@
 #include "models/plasticity/SubModelTable.h"
 #include "models/plasticity/ThermalModels.h"
 #include "models/plasticity/YieldCondition.h"
+#include "models/solid/ViscoPlastic.h"
 
 namespace tephra {
 
 const std::vector<std::string>& plasticity_sub_model_families() {
   static const std::vector<std::string> f = {
       "equation_of_state", "shear_modulus_model",       "yield_condition", "flow_model",          "internal_variable_model",
-      "kinematic_hardening_model", "damage_model", "melting_temp_model", "specific_heat_model", "stability_check"};
+      "kinematic_hardening_model", "damage_model", "melting_temp_model", "specific_heat_model", "stability_check",
+      "viscoplastic_flow_model"};  // the last: visco_plastic's (models/solid/ViscoPlastic.h)
   return f;
 }
 
@@ -27,6 +29,7 @@ std::optional<std::vector<std::string>> plasticity_sub_model_keys(const std::str
   if (family == "melting_temp_model") return sub_model_keys(melting_temperature_models());
   if (family == "specific_heat_model") return sub_model_keys(specific_heat_models());
   if (family == "stability_check") return sub_model_keys(stability_checks());
+  if (family == "viscoplastic_flow_model") return viscoplastic_flow_model_keys();
   return std::nullopt;
 }
 

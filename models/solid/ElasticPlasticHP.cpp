@@ -216,7 +216,7 @@ bool ElasticPlasticHP::update_point(const Eigen::Matrix3d& F_old, const Eigen::M
   if (!p_.isothermal && delta > 0.0) {
     st.eps_p = hist[kEpsP];
     st.eps_p_rate = hist[kEpsPRate];
-    const double cp = cp_->specific_heat(st);
+    const double cp = p_.compute_specific_heat ? cp_->specific_heat(st) : p_.specific_heat;
     out.heating = p_.taylor_quinney * work / dt / (rho * cp);  // VT 17.27, h^T (J2: σ_y ε̇_p)
   }
   // Porosity, damage (uncoupled, after the return: Algorithm 1) and failure (VT ch. 12, 15, 16).
@@ -282,6 +282,10 @@ ConstitutiveModelP ElasticPlasticHP::create(const ModelParameters& params) {
   ctx.specific_heat = params.enclosing_double("specific_heat", 0.0);
   ctx.room_temperature = params.enclosing_double("room_temp", 0.0);
   ctx.density0 = params.enclosing_double("density", 0.0);
+  p.compute_specific_heat = params.get_bool("compute_specific_heat", false);
+  p.specific_heat = ctx.specific_heat;
+  if (!p.isothermal && !p.compute_specific_heat && !(p.specific_heat > 0.0))
+    params.fail("isothermal", "elastic_plastic_hp with plastic heating needs the material's <specific_heat> > 0");
   m->failure_ = read_metal_failure(params, ctx, "elastic_plastic_hp");
   m->eos_ = assembly::sub_model(params, "elastic_plastic_hp", "equation_of_state", plasticity_eos_models(), "default_hypo", ctx,
                       [](const std::string& k, const ModelParameters& q, const SubModelContext& c) {

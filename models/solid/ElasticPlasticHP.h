@@ -80,6 +80,10 @@ struct ElasticPlasticHPParams {
   double taylor_quinney = 0.9;  // <taylor_quinney_coeff> χ
   double tolerance = 1e-12;     // <tolerance>: relative tolerance of the return
   bool isothermal = false;      // <isothermal>
+  // <compute_specific_heat> (Vaango's, default false): the heating's c_p from the
+  // <specific_heat_model>; false: the material's <specific_heat> (specific_heat below).
+  bool compute_specific_heat = false;
+  double specific_heat = 0.0;  // the material's <specific_heat> [J/(kg K)]
   bool do_melting = true;       // <do_melting> (Vaango's default)
   double alpha = 0.0;           // <coeff_thermal_expansion> [1/K] (Vaango's default 0)
   bool use_modified_eos = false;  // <useModifiedEOS>: MPMICE expansion branch (models/solid/ModifiedEos.h)

@@ -33,8 +33,37 @@
 // substeps in one step is a failure.
 // Vaango integrates with a theta-linearized rate form
 // (<integration_parameter_theta>); that parameter is read and not used.
+// Thermal strain (Vaango ViscoPlastic: d <- d - alpha dT/dt I, <coeff_thermal_expansion>,
+// default 1e-5 /K, 0 under <MPM><DoThermalExpansion>false): the mechanical rate is
+// d - alpha (T_{n+1} - T_last)/dt I, T_last the point's temperature at its previous update
+// (history lastTemperature, as hypo_elastic; only when alpha != 0).
 // Outputs: plastic work per reference volume J tau:eps_dot^i dt; stored energy
-// as hypo_elastic (complementary energy of the stress); heating 0.
+// as hypo_elastic (complementary energy of the stress); heating (Vaango's, Taylor-Quinney 0.9
+// fixed in its code)
+//   dT/dt = 0.9 sigma_eq(sigma_{n+1}) Delta eps_eq / (dt rho c_p),   rho = rho0/J,
+// Delta eps_eq = int eps_dot_eq dt over the step (history plasticStrain accumulates it),
+// c_p the material's <specific_heat> (required, > 0).
+// Failure (Vaango ViscoPlastic::updateFailedParticlesAndModifyStress, <check_failure>, default
+// false): after a step with inelastic flow (Delta eps_eq > 0) of a point not yet failed, the
+// measure m is the largest principal stress (<failure_by_stress>, default true), else the mean
+// stress tr(sigma)/3 (<failure_by_pressure>), else the largest principal Eulerian (Almansi) strain
+// (I - (F F^T)^-1)/2; the point fails (history localized = 1) when m > v_f, its failure
+// variable (history varf): <failure_variable_mean> (default 1e30) with
+// <failure_variable_distrib> constant, or |N(mean, <failure_variable_std>)| drawn once per point
+// for any other distribution (seeded_normal(0, point index), MetalFailure.h; Vaango draws from
+// its own generator, so the values differ point by point, not in distribution). At failure
+// sigma <- 0 (<zero_stress_upon_failure>, Vaango's default true), else with <allow_no_tension>
+// sigma <- 0 if tr(sigma)/3 > 0 else tr(sigma)/3 I, else unchanged; the step's changes of beta,
+// R, K are discarded (Vaango's updateElastic). A failed point keeps the stress of its failure
+// step from then on (Vaango copies the old stress of localized particles); Vaango also freezes F
+// of a failed particle when zeroing its stress: Tephra's F belongs to the driver and keeps
+// following the grid (the stress stays what it was set to). <remove_particles> adds Vaango's melt
+// check (T_{n+1} + dT > the material's <melt_temp>): as in Vaango it only discards the step's
+// changes of beta, R, K and does not flag the point.
+// MPMICE hooks (Vaango ViscoPlastic::computePressEOSCM / computeRhoMicroCM): gauge pressure
+// p = K/2 (rho/rho0 - rho0/rho), dp/drho = K/2 (1/rho0 + rho0/rho^2), c^2 = K/rho (Vaango's);
+// rho(p) = rho0 (x + sqrt(x^2 + 1)), x = p/K; <useModifiedEOS> the shared expansion branch
+// (models/solid/ModifiedEos.h).
 // Parameter map (deck tag -> symbol): coeff_backstress_evol A1 [Pa];
 // coeff_saturation_backstress b0 [Pa]; exponent_backstress n_b; ref_strainrate eps0 [1/s];
 // normalizing_inelastic_strainrate A [1/s]; activation_energy Q [J/mol];
@@ -48,6 +77,10 @@
 #include "models/solid/ConstitutiveModel.h"
 
 namespace tephra {
+
+// The <viscoplastic_flow_model type="..."> keys visco_plastic accepts (`tephra --list
+// viscoplastic_flow_model`): Vaango's suvic_i only.
+inline std::vector<std::string> viscoplastic_flow_model_keys() { return {"suvic_i"}; }
 
 struct SuvicParams {
   double A1 = 75e6, b0 = 0.1e6, n_b = 4.0, eps0 = 7.794e-8, A = 5e9, Q = 67500.0, Rg = 8.3144, T = 269.15;
@@ -69,22 +102,50 @@ double suvic_rates(const SuvicState& y, const Eigen::Matrix3d& d, double K_bulk,
 
 // Integrates the system over dt (adaptive Heun substeps); returns false on failure.
 // dissipation: int tau:eps_dot^i dt [J/m^3 current].
+// eq_strain (optional): int eps_dot_eq dt, the step's equivalent inelastic strain.
 bool suvic_integrate(SuvicState& y, const Eigen::Matrix3d& d, double dt, double K_bulk, double G,
-                     const SuvicParams& p, double& dissipation);
+                     const SuvicParams& p, double& dissipation, double* eq_strain = nullptr);
+
+// Vaango ViscoPlastic's model-level options (header comment above).
+struct SuvicFailure {
+  bool check = false;                          // <check_failure>
+  double mean = 1e30, std = 0.0;               // <failure_variable_mean>, <failure_variable_std>
+  bool random = false;                         // <failure_variable_distrib> other than "constant"
+  bool by_stress = true, by_pressure = false;  // <failure_by_stress>, <failure_by_pressure>
+  bool zero_stress = true, no_tension = false;  // <zero_stress_upon_failure>, <allow_no_tension>
+  bool melt_check = false;                     // <remove_particles>
+  double melt_temperature = 0.0;               // the material's <melt_temp> (melt_check only)
+};
+
+struct SuvicModel {
+  double alpha = 1e-5;         // <coeff_thermal_expansion> [1/K]
+  double specific_heat = 0.0;  // the material's <specific_heat> [J/(kg K)]
+  double taylor_quinney = 0.9;  // Vaango's fixed coefficient
+  bool use_modified_eos = false;
+  SuvicFailure failure;
+};
+
+// The failure measure of a point (header comment): largest principal stress, mean stress or
+// largest principal Almansi strain of F.
+double suvic_failure_measure(const SuvicFailure& f, const Eigen::Matrix3d& stress, const Eigen::Matrix3d& F);
 
 class ViscoPlastic final : public ConstitutiveModel {
  public:
-  ViscoPlastic(double K, double G, const SuvicParams& p) : K_(K), G_(G), p_(p) {}
+  ViscoPlastic(double K, double G, const SuvicParams& p, const SuvicModel& m = {}) : K_(K), G_(G), p_(p), m_(m) {}
   static ConstitutiveModelP create(const ModelParameters& params);
   std::string type() const override { return "visco_plastic"; }
   long update(const SolidUpdateInput& in, const SolidUpdateOutput& out) const override;
   std::vector<HistoryVariable> history() const override;
   double bulk_modulus() const override { return K_; }
   double shear_modulus() const override { return G_; }
+  std::optional<SolidEosPoint> pressure_at_density(double rho, double density0, double T) const override;
+  std::optional<double> density_at_pressure(double p_gauge, double density0, double T) const override;
+  bool modified_eos() const override { return m_.use_modified_eos; }
 
  private:
   double K_, G_;
   SuvicParams p_;
+  SuvicModel m_;
 };
 
 }  // namespace tephra

@@ -182,6 +182,7 @@ inline void add_sample_blocks(const std::string& type, MapModelParameters& p) {
   }
   if (type == "p_alpha") p.enclosing = {{"density", 7800.0}, {"specific_heat", 450.0}};
   if (type == "visco_plastic") {
+    p.enclosing = {{"specific_heat", 2000.0}};  // plastic heating needs c_p
     p.add_block("viscoplastic_flow_model", "suvic_i", {{"initial_yield", 1.0e9}, {"initial_drag", 1.0e9}});
     return;
   }

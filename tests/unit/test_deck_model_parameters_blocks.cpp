@@ -6,6 +6,7 @@
 // value read through get_string) is drawn per point.
 #include <cmath>
 #include <span>
+#include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -73,24 +74,19 @@ TEST(DeckModelParametersBlocks, EnabledDamageStartsFromTheDamageModelsD0) {
 // first update; the sample mean/std of N points are within 4 standard errors of
 // <initial_mean_scalar_damage> 0.005 and <initial_std_scalar_damage> 0.001 (inventory
 // ch. 15 tags). An unknown distribution is a DeckError.
-TEST(DeckModelParametersBlocks, GaussianInitialDamageIsDrawnPerPoint) {
-  std::string xml = a4_material("", "true");
-  const std::string at = "<stability_check";
-  xml.insert(xml.find(at), "<initial_scalar_damage_distrib>gauss</initial_scalar_damage_distrib>"
-                           "<initial_mean_scalar_damage>0.005</initial_mean_scalar_damage>"
-                           "<initial_std_scalar_damage>0.001</initial_std_scalar_damage>"
-                           "<scalar_damage_seed>42</scalar_damage_seed>");
-  const auto m = parse(xml);
-  ASSERT_TRUE(m);
-  const std::vector<HistoryVariable> h = m->history();
-  const std::size_t n = 20000;
+// The column `name` of n points after one initialization update of m (dt = 0, F = I), and
+// after a second one in *again.
+std::vector<double> drawn_column(const ConstitutiveModel& m, const std::string& name, std::size_t n,
+                                 std::vector<double>* again) {
+  const std::vector<HistoryVariable> h = m.history();
   std::vector<std::vector<double>> cols;
-  int kD = -1;
+  int k_col = -1;
   for (std::size_t k = 0; k < h.size(); ++k) {
-    cols.emplace_back(n, h[k].initial[0]);
-    if (h[k].name == "damage") kD = int(k);
+    cols.emplace_back(n * h[k].components, h[k].initial[0]);
+    if (h[k].name == name) k_col = int(k);
   }
-  ASSERT_GE(kD, 0);
+  EXPECT_GE(k_col, 0) << name;
+  if (k_col < 0) return {};
   std::vector<std::span<double>> spans(cols.begin(), cols.end());
   std::vector<Eigen::Matrix3d> F(n, Eigen::Matrix3d::Identity()), L(n, Eigen::Matrix3d::Zero()),
       sig(n, Eigen::Matrix3d::Zero()), sig_out(n);
@@ -100,16 +96,35 @@ TEST(DeckModelParametersBlocks, GaussianInitialDamageIsDrawnPerPoint) {
   in.density0 = 8930.0;
   in.F_old = F, in.F_new = F, in.L = L, in.temperature = T, in.stress_old = sig;
   const SolidUpdateOutput out{sig_out, c, w, pw, heat, spans};
-  ASSERT_EQ(m->update(in, out), -1);
+  EXPECT_EQ(m.update(in, out), -1);
+  const std::vector<double> first = cols[k_col];
+  EXPECT_EQ(m.update(in, out), -1);
+  if (again) *again = cols[k_col];
+  return first;
+}
+
+void expect_gaussian(const std::vector<double>& v, double mean, double sd) {
+  const double n = double(v.size());
   double s1 = 0, s2 = 0;
-  for (double d : cols[kD]) s1 += d, s2 += d * d;
-  const double mean = s1 / n, sd = std::sqrt(s2 / n - mean * mean);
-  EXPECT_NEAR(mean, 0.005, 4 * 0.001 / std::sqrt(double(n)));
-  EXPECT_NEAR(sd, 0.001, 4 * 0.001 / std::sqrt(2.0 * n));
-  // A second update draws nothing new (the point keeps its value).
-  const std::vector<double> first = cols[kD];
-  ASSERT_EQ(m->update(in, out), -1);
-  EXPECT_EQ(cols[kD], first);
+  for (double d : v) s1 += d, s2 += d * d;
+  const double m = s1 / n, s = std::sqrt(s2 / n - m * m);
+  EXPECT_NEAR(m, mean, 4 * sd / std::sqrt(n));
+  EXPECT_NEAR(s, sd, 4 * sd / std::sqrt(2.0 * n));
+}
+
+TEST(DeckModelParametersBlocks, GaussianInitialDamageIsDrawnPerPoint) {
+  std::string xml = a4_material("", "true");
+  const std::string at = "<stability_check";
+  xml.insert(xml.find(at), "<initial_scalar_damage_distrib>gauss</initial_scalar_damage_distrib>"
+                           "<initial_mean_scalar_damage>0.005</initial_mean_scalar_damage>"
+                           "<initial_std_scalar_damage>0.001</initial_std_scalar_damage>"
+                           "<scalar_damage_seed>42</scalar_damage_seed>");
+  const auto m = parse(xml);
+  ASSERT_TRUE(m);
+  std::vector<double> again;
+  const std::vector<double> first = drawn_column(*m, "damage", 20000, &again);
+  expect_gaussian(first, 0.005, 0.001);
+  EXPECT_EQ(again, first);  // a second update draws nothing new (the point keeps its value)
 
   std::string bad = a4_material("", "true");
   bad.insert(bad.find(at), "<initial_scalar_damage_distrib>lognormal</initial_scalar_damage_distrib>");
@@ -117,6 +132,30 @@ TEST(DeckModelParametersBlocks, GaussianInitialDamageIsDrawnPerPoint) {
   std::string constant = a4_material("", "true");
   constant.insert(constant.find(at), "<initial_scalar_damage_distrib>constant</initial_scalar_damage_distrib>");
   EXPECT_TRUE(parse(constant));
+}
+
+// The same for the porosity tags (VT ch. 12 tags; MetalFailure.h): <initial_porosity_distrib>
+// gauss, <initial_mean_porosity> 0.05, <initial_std_porosity> 0.01 (4 standard errors of 20000
+// draws); a different <porosity_seed> gives different points with the same distribution.
+TEST(DeckModelParametersBlocks, GaussianInitialPorosityIsDrawnPerPoint) {
+  auto deck = [](int seed) {
+    std::string xml = a4_material("", "true");
+    xml.insert(xml.find("<stability_check"),
+               "<initial_porosity_distrib>gauss</initial_porosity_distrib>"
+               "<initial_mean_porosity>0.05</initial_mean_porosity>"
+               "<initial_std_porosity>0.01</initial_std_porosity><porosity_seed>" +
+                   std::to_string(seed) + "</porosity_seed>");
+    return xml;
+  };
+  const auto m = parse(deck(7)), m2 = parse(deck(8));
+  ASSERT_TRUE(m && m2);
+  std::vector<double> again;
+  const std::vector<double> first = drawn_column(*m, "porosity", 20000, &again);
+  expect_gaussian(first, 0.05, 0.01);
+  EXPECT_EQ(again, first);
+  const std::vector<double> other = drawn_column(*m2, "porosity", 20000, nullptr);
+  expect_gaussian(other, 0.05, 0.01);
+  EXPECT_NE(other, first);
 }
 
 }  // namespace

@@ -130,6 +130,14 @@ TEST(ModelCnhDamage, Parameters) {
   p.values["failure_variable_std"] = 0.01;
   EXPECT_THROW(create_constitutive_model("cnh_damage", p), std::logic_error);  // MissingFeature
   p.values.erase("failure_variable_std");
+  // <failure_variable_distrib> with std 0: every point's threshold is the mean (accepted, the
+  // same model); with std > 0 the random thresholds are the MissingFeature above.
+  p.strings["failure_variable_distrib"] = "gauss";
+  EXPECT_TRUE(create_constitutive_model("cnh_damage", p));
+  p.values["failure_variable_std"] = 0.01;
+  EXPECT_THROW(create_constitutive_model("cnh_damage", p), std::logic_error);
+  p.values.erase("failure_variable_std");
+  p.strings.erase("failure_variable_distrib");
   p.values["failure_variable_mean"] = -1;
   EXPECT_THROW(create_constitutive_model("cnh_damage", p), std::invalid_argument);
 }

@@ -280,6 +280,52 @@ TEST(ElasticPlastic, TeplaFailureFlagsThePoint) {
   EXPECT_EQ(s.history[5][0], 1.0);
 }
 
+// <critical_porosity> is the phi_c of the TEPLA criterion (VT eq. 16.1, Vaango's form
+// (phi/phi_c)^2 + D^2 > 1 after a plastic step; no damage model: D = 0). phi_0 = 0.3 and no
+// nucleation (frac_nucleation 0; J2 flow is isochoric, so no growth): with the default
+// phi_c = 0.5, (0.3/0.5)^2 = 0.36 < 1, not failed; with phi_c = 0.25, (0.3/0.25)^2 = 1.44 > 1, failed.
+TEST(ElasticPlastic, TeplaCriterionUsesTheCriticalPorosity) {
+  for (const double fc : {0.0, 0.25}) {  // 0: the tag absent (default 0.5)
+    auto p = linear_parameters(1e9);
+    p.values["initial_mean_porosity"] = 0.3;
+    p.values["frac_nucleation"] = 0.0;
+    p.values["check_max_stress_failure"] = 0.0;
+    if (fc > 0) p.values["critical_porosity"] = fc;
+    const auto m = create_constitutive_model("elastic_plastic", p);
+    test::PointState s(*m);
+    const double l2 = std::exp(0.01);  // plastic
+    ASSERT_EQ(test::step_point(*m, kRho, s, Eigen::Vector3d(l2, 1 / std::sqrt(l2), 1 / std::sqrt(l2)).asDiagonal().toDenseMatrix(), 1e-6), -1);
+    EXPECT_GT(s.history[0][0], 0.0) << "the step must be plastic";
+    EXPECT_EQ(s.history[5][0], fc > 0 ? 1.0 : 0.0) << "critical_porosity " << fc;
+  }
+}
+
+// <compute_specific_heat> true (both metal models, as Vaango's ElasticPlastic and ElasticPlasticHP):
+// the heating uses the <specific_heat_model> (here copper_Cp,
+// VT eq. 14.2 above T_0 = 270 K: C_p = A_1 T + B_1 = 0.1009 * 300 + 358.4 = 388.67 J/(kg K) with
+// Vaango's constants), false: the material's <specific_heat> 414. With the linear (temperature-free)
+// flow law the return is the same, so heating ratio = 414 / 388.67 (eq. 18.20: chi sigma_y eps_p_dot/(rho C_p)).
+TEST(ElasticPlastic, ComputeSpecificHeatSelectsTheSpecificHeatModel) {
+  for (const char* type : {"elastic_plastic", "elastic_plastic_hp"}) {
+  SCOPED_TRACE(type);
+  double heat[2];
+  for (int c = 0; c < 2; ++c) {
+    auto p = linear_parameters(1e9);
+    p.values["isothermal"] = 0.0;
+    p.values["compute_specific_heat"] = c;
+    p.add_block("specific_heat_model", "copper_Cp");
+    const auto m = create_constitutive_model(type, p);
+    test::PointState s(*m);
+    s.temperature = 300.0;
+    const double l = std::exp(0.01);  // plastic
+    ASSERT_EQ(test::step_point(*m, kRho, s, Eigen::Vector3d(l, 1 / std::sqrt(l), 1 / std::sqrt(l)).asDiagonal().toDenseMatrix(), 1e-6), -1);
+    heat[c] = s.heating;
+  }
+  ASSERT_GT(heat[0], 0.0);
+  EXPECT_NEAR(heat[1] / heat[0], 414.0 / (0.1009 * 300 + 358.4), 1e-12);
+  }
+}
+
 // MTS (VT 10.16-10.23) in the composite: sigma_e is history and grows with eps_p; the
 // returned deviator lies on sigma_y(sigma_e,n+1) (the flow law's own value).
 TEST(ElasticPlastic, MtsFlowCarriesTheStructureStress) {

@@ -16,10 +16,12 @@ namespace {
 
 using M3 = Eigen::Matrix3d;
 const double kG = 3.52e9, kK = 8.9e9, kRho0 = 917.0;  // the seed deck's ice (VT §10.8)
+const double kCp = 2093.0;                            // ice c_p [J/(kg K)] (heating tests)
 const SuvicParams kP;                                 // Vaango's defaults = the seed deck's values
 
 test::MapModelParameters params(std::map<std::string, double> flow = {}) {
   test::MapModelParameters p({{"shear_modulus", kG}, {"bulk_modulus", kK}});
+  p.enclosing = {{"specific_heat", kCp}};
   p.add_block("viscoplastic_flow_model", "suvic_i", std::move(flow));
   return p;
 }
@@ -128,6 +130,11 @@ TEST(ModelViscoPlasticSuvic, SteadyStateIsTheSaturationStress) {
   M3 beta;
   for (int i = 0; i < 9; ++i) beta(i / 3, i % 3) = s.history[0][i];
   EXPECT_NEAR(std::sqrt(1.5 * beta.squaredNorm()), bsat, 1e-3 * bsat);
+  // Heating (Vaango's): dT/dt = 0.9 sigma_eq eps_dot_eq/(rho c_p); at steady state the whole
+  // imposed rate is inelastic (eps_dot_eq = e) and sigma_eq = sigma_sat, rho = rho0 (isochoric).
+  const double heat = 0.9 * ssat * e / (kRho0 * kCp);
+  EXPECT_NEAR(s.heating, heat, 2e-3 * heat);
+  RecordProperty("heating_over_closed_form", testing::PrintToString(s.heating / heat));
 }
 
 TEST(ModelViscoPlasticSuvic, BelowTheYieldStressItIsHypoElastic) {
@@ -146,6 +153,8 @@ TEST(ModelViscoPlasticSuvic, BelowTheYieldStressItIsHypoElastic) {
 
 TEST(ModelViscoPlasticSuvic, Parameters) {
   test::MapModelParameters p({{"shear_modulus", kG}, {"bulk_modulus", kK}});
+  EXPECT_THROW(create_constitutive_model("visco_plastic", p), std::invalid_argument);  // no <specific_heat>
+  p.enclosing = {{"specific_heat", kCp}};
   EXPECT_THROW(create_constitutive_model("visco_plastic", p), std::invalid_argument);  // no flow block
   p.add_block("viscoplastic_flow_model", "suvic_ii");
   EXPECT_THROW(create_constitutive_model("visco_plastic", p), std::logic_error);  // MissingFeature
@@ -158,7 +167,9 @@ TEST(ModelViscoPlasticSuvic, Parameters) {
   ok.add_block("equation_of_state", "default_hypo", {{"bulk_modulus", kK}});
   const ConstitutiveModelP m = create_constitutive_model("visco_plastic", ok);
   ASSERT_TRUE(m);
-  ASSERT_EQ(m->history().size(), 3u);
+  // backstress, yield, drag, plasticStrain, localized, varf, lastTemperature (alpha = 1e-5 by default)
+  ASSERT_EQ(m->history().size(), 7u);
+  EXPECT_EQ(m->history()[4].name, "localized");
   EXPECT_EQ(m->history()[2].name, "drag");
   EXPECT_EQ(m->history()[2].initial[0], 0.05e6);
 }

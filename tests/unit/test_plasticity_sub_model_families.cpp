@@ -28,6 +28,7 @@ const std::map<std::string, std::vector<std::string>> kIssueKeys = {
     {"melting_temp_model", {"constant_Tm", "linear_Tm", "scg_Tm", "bps_Tm"}},
     {"specific_heat_model", {"constant_Cp", "cubic_Cp", "copper_Cp", "steel_Cp"}},
     {"stability_check", {"none", "drucker", "acoustic", "becker", "drucker_becker"}},
+    {"viscoplastic_flow_model", {"suvic_i"}},  // visco_plastic's
 };
 
 TEST(SubModelFamilies, EveryIssueKeyIsListed) {
