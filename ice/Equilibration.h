@@ -10,20 +10,6 @@
 // after the first iteration, so this is Newton on sum theta_m(p) = 1, since
 // dtheta_m/dp = -1/y_m). A step that would make p <= 0 is halved instead.
 // One material needs no iteration: theta = 1, p = p_eos(rho_micro, T).
-//
-// Absent materials (a trace at tiny_rho, or none): a material whose theta at
-// the starting guess (rho_CC * sp_vol) is <= absent_volume_fraction(tol) is
-// left out of the Newton in that cell. Its theta is a constant of the
-// iteration (the present materials solve sum_present theta = 1 - theta_abs),
-// its rho(p, T) is solved once the present materials have converged, and if
-// theta_abs then moved by more than tol/2 the cell iterates on with the new
-// theta_abs; an absent material whose theta at the converged p exceeds the
-// threshold rejoins the Newton in that cell. The fixed point is the same (|sum theta - 1| <= 1.5 tol), and an
-// absent material's rho(p, T) (an implicit solve for JWLC, JWL, ...) is
-// evaluated once or twice per step instead of at every Newton iteration.
-// Uintah's computeEquilibrationPressure (ICE.cc, MPMICE.cc) iterates every
-// material in every cell; this is a Tephra departure for speed
-// (docs/algorithms/ice.md, "Absent materials").
 #include <span>
 #include <vector>
 
@@ -50,13 +36,9 @@ struct EquilibrationResult {
 
 // All spans have the same length n (cells). `press` holds a starting guess on
 // entry (used by Newton only; one material ignores it) and the result on exit.
-// Converged when |sum theta - 1| <= tol (1.5 tol with absent materials) and the last Newton step dp is below
+// Converged when |sum theta - 1| <= tol and the last Newton step dp is below
 // tol * p or below the round-off resolution of sum theta (|dp| C <= 4 nm eps,
 // C = -d sum theta/dp) in every cell.
-// theta at or below this is "absent" (100 tol: 1e-9 at the default tol; a
-// tiny_rho trace has theta ~ 1e-12).
-constexpr double absent_volume_fraction(double tol) { return 100.0 * tol; }
-
 EquilibrationResult equilibrate_pressure(std::vector<EquilibrationMaterial>& mats, std::span<double> press,
                                          int max_iterations, double tol = 1e-11);
 

@@ -1,14 +1,16 @@
-// Equilibration pressure with absent materials (ice/Equilibration.h: a
-// material with theta <= absent_volume_fraction(tol) at the starting guess
-// leaves the Newton; its theta is held fixed and re-solved at convergence).
+// Equilibration pressure with absent materials: a trace (theta ~ 1e-10, as
+// tiny_rho leaves a material where it is absent) and a material with no mass
+// at all in a cell (ice/Equilibration.cpp iterates every material in every
+// cell, as Uintah; session 16 tried leaving the traces out of the Newton:
+// correct, not faster, reverted; docs/algorithms/ice.md "Absent materials").
 //
 // Oracle (Dalton, every material an ideal gas): theta_m = rho_CC_m (g_m - 1)
 // cv_m T_m / p, so sum theta = 1 gives exactly
 //     p = sum_m (g_m - 1) rho_CC_m cv_m T_m,
 // including the absent material's share. Its share here is 5e-10 of p (theta
-// 5e-10 at the answer, below the 1e-9 threshold), 30x the 1.5e-11 the test
-// allows: a Newton that ignored the absent material (or kept its starting
-// theta, which cell 1 makes 10x smaller) fails the pressure check.
+// 5e-10 at the answer), 30x the 1.5e-11 the test allows: a Newton that
+// ignored the trace (or kept its starting theta, which cell 1 makes 10x
+// smaller) fails the pressure check.
 // Also: Sum theta = 1 to 1.5 tol, rho_micro = rho(p, T) and c^2 = g p / rho of
 // the absent material at the converged p, and a material with rho_CC = 0
 // (theta 0: no share) still gets rho(p, T).
@@ -28,13 +30,13 @@ struct Gas {
   double R() const { return (g - 1.0) * cv; }
 };
 
-TEST(IceEquilibration, AbsentMaterialsLeaveTheNewtonAndKeepTheirShare) {
+TEST(IceEquilibration, TracesAndEmptyMaterialsKeepTheirShare) {
   const Gas ga{1.4, 717.5}, gb{1.289, 652.9}, gc{1.25, 2000.0};
   const IdealGas a(ga.g, ga.cv), b(gb.g, gb.cv), c(gc.g, gc.cv);
   // Four cells. Material c is absent in cells 0-2 and present in cell 3.
-  //  0: c at theta 5e-10 of the answer, p guess = the answer (no re-check round)
+  //  0: c at theta 5e-10 of the answer, p guess = the answer
   //  1: the same with the guess 10x too high (c's starting theta is 1/10 of
-  //     its final one: the re-check must move theta_abs and iterate again)
+  //     its final one)
   //  2: c with rho_CC = 0 (theta 0, no share), guess 3x too high
   //  3: all three present (the ordinary Newton), guess 2x too low
   const std::vector<double> Ta = {300, 300, 300, 350}, Tb = {400, 400, 400, 380}, Tc = {2500, 2500, 2500, 600};
@@ -59,8 +61,6 @@ TEST(IceEquilibration, AbsentMaterialsLeaveTheNewtonAndKeepTheirShare) {
     mc[i] = guess[i] / (gc.R() * Tc[i]);
   }
   const double tol = 1e-11;
-  ASSERT_LE(rc[0] / mc[0], absent_volume_fraction(tol));  // absent at the start
-  ASSERT_LE(rc[1] / mc[1], absent_volume_fraction(tol));
   EXPECT_NEAR(rc[1] / mc[1], 5e-11, 1e-22) << "cell 1 starts at 1/10 of its final theta";
   std::vector<EquilibrationMaterial> mats = {
       {&a, ra, Ta, ma, tha, ca}, {&b, rb, Tb, mb, thb, cb}, {&c, rc, Tc, mc, thc, cc}};
@@ -78,24 +78,6 @@ TEST(IceEquilibration, AbsentMaterialsLeaveTheNewtonAndKeepTheirShare) {
   EXPECT_NEAR(thc[0], 5e-10, 1e-20);
   EXPECT_NEAR(thc[1], 5e-10, 1e-20);
   EXPECT_EQ(thc[2], 0.0);
-}
-
-// A material just above the threshold stays in the Newton: the same oracle
-// with theta_c = 5e-9 (> 1e-9) at the start and at the answer.
-TEST(IceEquilibration, TraceAboveTheAbsentThresholdIsIterated) {
-  const Gas ga{1.4, 717.5}, gc{1.25, 2000.0};
-  const IdealGas a(ga.g, ga.cv), c(gc.g, gc.cv);
-  std::vector<double> Ta = {300}, Tc = {2500}, ra = {1.2};
-  const double p_exact = ra[0] * ga.R() * Ta[0] / (1.0 - 5e-9);
-  std::vector<double> rc = {5e-9 * p_exact / (gc.R() * Tc[0])};
-  std::vector<double> p = {p_exact}, ma = {p_exact / (ga.R() * Ta[0])}, mc = {p_exact / (gc.R() * Tc[0])};
-  std::vector<double> tha(1), thc(1), ca(1), cc(1);
-  ASSERT_GT(rc[0] / mc[0], absent_volume_fraction(1e-11));
-  std::vector<EquilibrationMaterial> mats = {{&a, ra, Ta, ma, tha, ca}, {&c, rc, Tc, mc, thc, cc}};
-  const EquilibrationResult r = equilibrate_pressure(mats, p, 100);
-  ASSERT_TRUE(r.converged);
-  EXPECT_NEAR(p[0], p_exact, 1e-11 * p_exact);
-  EXPECT_NEAR(tha[0] + thc[0], 1.0, 1e-11);
 }
 
 }  // namespace
