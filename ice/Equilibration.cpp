@@ -147,7 +147,10 @@ EquilibrationResult equilibrate_pressure(std::vector<EquilibrationMaterial>& mat
         const EosState& st = s.states[k * n + a];
         const double theta = mats[k].vol_frac[i];
         const double Q = press[i] - st.p;
-        const double inv_y = theta * theta / (st.dp_drho * mats[k].rho_CC[i]);
+        // 1/y = theta^2 / (dp/drho rho_CC) = rho_CC / (rho^2 dp/drho) -> 0 with
+        // rho_CC: a material with no mass in the cell (theta = 0) has no
+        // share (0/0 otherwise: NaN, and the cell never converged).
+        const double inv_y = mats[k].rho_CC[i] > 0.0 ? theta * theta / (st.dp_drho * mats[k].rho_CC[i]) : 0.0;
         A += theta;
         B += Q * inv_y;
         C += inv_y;

@@ -4,7 +4,7 @@
 // Run: build/bin/bench_ice_box [n=64] [steps=10] [materials=all] [threads=1,2] [phases=0] [patches_x=1]
 // (under mpirun -np N the patches_x slabs are spread over the ranks; every
 // rank prints its table, the wall times are the same to a few per cent)
-// (materials 0 = 1, 2 and 4; threads 0 = 1 and 2; phases 1 prints the
+// (materials 0 = 1, 2 and 4, else that count; threads 0 = 1 and 2; phases 1 prints the
 // PhaseTimers table of the timed steps of each run).
 // Each material fills one slab of the box along x (the others are present at
 // tiny_rho everywhere, as in Uintah), with a pressure jump between slabs so
@@ -17,6 +17,7 @@
 #include <cstdlib>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "core/base/PhaseTimers.h"
 #include "core/deck/DeckLoader.h"
@@ -82,8 +83,8 @@ int main(int argc, char** argv) {
   // when other jobs share the cores; the wall figure is the measure.
   std::printf("%10s %8s %12s %18s %22s %20s\n", "materials", "threads", "wall [s]", "cell-steps/s",
               "cell-steps/s/thread", "cell-steps/CPU-s");
-  for (int materials : {1, 2, 4}) {
-    if (only != 0 && materials != only) continue;
+  const std::vector<int> counts = only != 0 ? std::vector<int>{only} : std::vector<int>{1, 2, 4};
+  for (int materials : counts) {
     for (int threads : {1, 2}) {
       if (only_threads != 0 && threads != only_threads) continue;
       set_thread_count(threads);
