@@ -39,6 +39,7 @@ class MpmIceComponent final : public Component, private MpmCoupling, private Sol
   void keep_whole_level() { mpm_->keep_whole_level(); }
   const MpmComponent& mpm() const { return *mpm_; }
   const IceComponent& ice() const { return *ice_; }
+  IceComponent& mutable_ice() { return *ice_; }  // tests: hooks of the implicit pressure
   // Particle pressure p_p - p_ref of MPM material m from the last step (step 7).
   const std::vector<double>& particle_pressure(std::size_t m) const { return particle_pressure_[m]; }
 
