@@ -49,7 +49,8 @@ double IceComponent::residual_after_shift(double dt, const IntVec3& n, double sh
   return r;
 }
 
-IceComponent::JacobianRow IceComponent::implicit_jacobian_row(double dt, const IntVec3& c) {
+IceComponent::JacobianRow IceComponent::implicit_jacobian_row(double dt, const IntVec3& cell) {
+  const IntVec3 c = cell;  // a copy: `cell` may be max_rhs_cell_, which pressure_residual rewrites
   const Grid& g = setup_.grid;
   JacobianRow row;
   row.cell = c;
