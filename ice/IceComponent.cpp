@@ -338,6 +338,7 @@ void IceComponent::advance(double t, double dt, int step) {
 
 void IceComponent::advance_one(double dt, int step) {
   PhaseTimers& T = phase_timers();
+  lag_theta_frozen_ = false;  // the solids' face fractions of this step are computed afresh
   { PhaseTimers::Scope s(T, "ICE: equilibration pressure");       compute_equilibration_pressure(step); }
   if (setup_.implicit.enabled) {
     // Uintah's implicit order: the model sources and the volume fractions
@@ -362,6 +363,7 @@ void IceComponent::advance_one(double dt, int step) {
 // failed implicit solve stops the run with exit 4).
 void IceComponent::coupled_pressure_phases(double dt, int step) {
   PhaseTimers& T = phase_timers();
+  lag_theta_frozen_ = false;  // the solids' face fractions of this step are computed afresh
   { PhaseTimers::Scope s(T, "ICE: equilibration pressure");       compute_equilibration_pressure(step); }
   if (setup_.implicit.enabled) {
     if (model_src_) { PhaseTimers::Scope s(T, "ICE: model sources"); compute_model_sources(dt, step); }

@@ -55,6 +55,21 @@ class IceComponent final : public Component {
   // and how many steps were redone with half the time step.
   int last_outer_iterations() const { return last_outer_iterations_; }
   int step_restarts() const { return step_restarts_; }
+  // Row c of the implicit pressure matrix (kCenter, kWest, ...) against the
+  // one-sided finite-difference Jacobian -d(rhs_c)/dp_n of the residual at
+  // the current iterate (ImplicitPressureCheck.cpp). Entries outside the
+  // domain stay 0.
+  struct JacobianRow {
+    IntVec3 cell = IntVec3::Zero();
+    double matrix[kStencilSize] = {}, fd_plus[kStencilSize] = {}, fd_minus[kStencilSize] = {};
+  };
+  JacobianRow implicit_jacobian_row(double dt, const IntVec3& c);
+  // Called at every outer iteration that solves (after the residual and the
+  // matrix of the iterate; tests of the outer iteration), and the cell of the
+  // largest |residual| of that iterate.
+  using OuterIterationHook = std::function<void(IceComponent&, double dt, int step, int outer)>;
+  void set_outer_iteration_hook(OuterIterationHook hook) { outer_hook_ = std::move(hook); }
+  const IntVec3& max_residual_cell() const { return max_rhs_cell_; }
 
   // ---- MPMICE hooks (mpmice/MpmIceComponent.cpp). Materials with
   // IceMaterialSpec::lagrangian get their cell state from the particles:
@@ -132,6 +147,10 @@ class IceComponent final : public Component {
   void assemble_pressure_matrix(double dt);
   double pressure_residual(double dt);  // fills rhs_, returns max |rhs| (its cell: max_rhs_cell_)
   std::string residual_where() const;
+  // ImplicitPressureCheck.cpp: rhs_c after p_n += shift (p restored, not the face velocities).
+  double residual_after_shift(double dt, const IntVec3& n, double shift, const IntVec3& c);
+  static bool implicit_trace_enabled();
+  void trace_outer_iteration(double dt, int step, int it, double max_rhs);
   void sum_volume_flux_and_kappa(double dt);
   struct StepRestart {
     std::string why;
@@ -141,13 +160,17 @@ class IceComponent final : public Component {
   bool has_lagrangian_flux(std::size_t m) const;
   void lagrangian_volume_flux(std::size_t m, FaceScalars& flux) const;
   void scale_fluid_flux(std::size_t m, double dt, FaceScalars& flux);
-  // theta_s,face of solid s on face R of axis d, the solid's phi = u dt/dx
-  // there, and whether theta_s,face = F_s/phi_s (unclamped) varies with phi_s.
+  // theta_s,face of solid s on face R of axis d and the solid's phi = u dt/dx there.
   struct SolidFaceFraction {
     double theta = 0, phi = 0;
-    bool varies = false;
   };
   SolidFaceFraction solid_face_fraction(std::size_t s, int d, std::size_t pi, const IntVec3& R, double dt) const;
+  // Sum over the solids of theta_s,face (at most 1): the values frozen by
+  // freeze_solid_face_fractions during a semi-implicit step, else computed.
+  double solids_face_fraction(int d, std::size_t pi, const IntVec3& R, double dt) const;
+  void freeze_solid_face_fractions(double dt);
+  // The implicit matrix's fluid shares F_m/phi_m per face (ImplicitPressureMatrix.cpp).
+  void fluid_face_shares(double dt);
   // a_f of the implicit pressure matrix on face R of axis d (ImplicitPressureMatrix.cpp).
   double pressure_face_coefficient(int d, std::size_t pi, const IntVec3& R, double dt, bool boundary, int face) const;
   void fluids_fill_volume_left_by_solids();  // MPMICE initial state (IceComponent.cpp)
@@ -199,6 +222,7 @@ class IceComponent final : public Component {
   CellScalars rhs_, delta_p_;
   int last_outer_iterations_ = 0, step_restarts_ = 0;
   IntVec3 max_rhs_cell_ = IntVec3::Zero();
+  OuterIterationHook outer_hook_;
   // Source models: per-step sources (null without models), delP_MassX, the
   // Lagrangian value of a model scalar, and the time at the start of the step.
   std::unique_ptr<IceModelSources> model_src_;
@@ -208,6 +232,9 @@ class IceComponent final : public Component {
   std::vector<FaceScalars> lag_mass_flux_;  // MPMICE: per material (empty for fluids), lagrangian_mass_flux()
   FaceScalars lag_chi_;                     // MPMICE: scratch of scale_fluid_flux
   CellScalars lag_limit_;
+  FaceScalars lag_theta_face_;     // MPMICE implicit: theta_face held over the outer iterations
+  bool lag_theta_frozen_ = false;  // set by freeze_solid_face_fractions, cleared at the next step
+  std::vector<FaceScalars> imp_share_;  // MPMICE implicit: per fluid, F_m/phi_m on each face
 };
 
 // The ICE part of a deck (make_ice_component), with `solids` (an MPMICE run's

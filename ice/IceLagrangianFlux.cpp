@@ -70,9 +70,8 @@ void IceComponent::lagrangian_volume_flux(std::size_t m, FaceScalars& flux) cons
 // velocity after exchange), clamped to [0, 1]. The face fraction of a flux
 // against the face velocity is 0 (a round-off flux at the end of a row); a
 // face whose solid face velocity is ~0 (the fluids locked to it hardly cross
-// it) takes the mean of the two cells' solid fractions. `varies`: the value is
-// F_s/phi_s strictly inside (0, 1), so it changes with phi_s (the implicit
-// pressure matrix linearises it, ImplicitPressureMatrix.cpp).
+// it) takes the mean of the two cells' solid fractions. Not continuous in
+// phi_s (see freeze_solid_face_fractions).
 IceComponent::SolidFaceFraction IceComponent::solid_face_fraction(std::size_t s, int d, std::size_t pi, const IntVec3& R,
                                                                   double dt) const {
   const IceMaterialFields& fs = mats_[s];
@@ -88,10 +87,52 @@ IceComponent::SolidFaceFraction IceComponent::solid_face_fraction(std::size_t s,
     out.theta = std::clamp(0.5 * (fs.vol_frac_CC[pi](L) + fs.vol_frac_CC[pi](R)), 0.0, 1.0);
     return out;
   }
-  const double t = Fv / out.phi;
-  out.theta = std::clamp(t, 0.0, 1.0);
-  out.varies = t > 0.0 && t < 1.0;
+  out.theta = std::clamp(Fv / out.phi, 0.0, 1.0);
   return out;
+}
+
+// The semi-implicit pressure (ImplicitPressure.cpp) holds the solids' face
+// fractions fixed over its outer iterations, at their values for the face
+// velocities of the first iterate (p = p_eq, the explicit step's): the sum
+// over the solids of theta_s,face, at most 1, per face. Why: theta_s,face =
+// F_s/phi_s is not a continuous function of p. Where the pressure gradient
+// of an iterate turns a solid's face velocity phi_s against the particles'
+// flux F_s (a solid barely moving, phi_s ~ 0), theta_s,face jumps between 1
+// (F_s/phi_s -> +inf, clamped) and 0 (F_s/phi_s < 0), the fluid's share of
+// the face between 0 and 1 - (the other solids), and the residual by the
+// whole fluid flux of the face. SteadyBurn_2dRT step 12 (docs/mpmice.md):
+// the HMX face velocity on a face next to the steel flips between -3.6e-12
+// and +7.3e-9 (F_HMX = -1.4e-9) from one outer iteration to the next, the
+// gas flux of the face between 0 and 3.4e-7 (tolerance 1.01e-7), and the
+// outer iteration cycles. With theta_face fixed the residual is continuous
+// and piecewise linear in the face velocities (donor switch, positivity
+// limit), and its derivative is the matrix of ImplicitPressureMatrix.cpp.
+// The explicit step evaluates theta_face once, at the same face velocities.
+void IceComponent::freeze_solid_face_fractions(double dt) {
+  const Grid& g = setup_.grid;
+  std::vector<std::size_t> solids;
+  for (std::size_t s = 0; s < mats_.size(); ++s)
+    if (has_lagrangian_flux(s)) solids.push_back(s);
+  if (lag_theta_face_.x.size() == 0) lag_theta_face_ = FaceScalars(g, 0);
+  for (std::size_t pi = 0; pi < g.patches.size(); ++pi)
+    for (int d = 0; d < 3; ++d) {
+      GridArray<double>& th = lag_theta_face_.at(d, pi);
+      for_each_cell(faces_of(g.patches[pi], d), [&](int i, int j, int k) {
+        const IntVec3 R(i, j, k);
+        double theta_face = 0;
+        for (std::size_t s : solids) theta_face += solid_face_fraction(s, d, pi, R, dt).theta;
+        th(R) = std::min(theta_face, 1.0);
+      });
+    }
+  lag_theta_frozen_ = true;
+}
+
+double IceComponent::solids_face_fraction(int d, std::size_t pi, const IntVec3& R, double dt) const {
+  if (lag_theta_frozen_) return lag_theta_face_.at(d, pi)(R);
+  double theta_face = 0;
+  for (std::size_t s = 0; s < mats_.size(); ++s)
+    if (has_lagrangian_flux(s)) theta_face += solid_face_fraction(s, d, pi, R, dt).theta;
+  return std::min(theta_face, 1.0);
 }
 
 // flux *= chi (above) on every face, for fluid m, with a positivity limit:
@@ -122,9 +163,7 @@ void IceComponent::scale_fluid_flux(std::size_t m, double dt, FaceScalars& flux)
       const GridArray<double>& um = u.at(d, pi);
       for_each_cell(faces_of(g.patches[pi], d), [&](int i, int j, int k) {
         const IntVec3 R(i, j, k), L = R - e;
-        double theta_face = 0;
-        for (std::size_t s : solids) theta_face += solid_face_fraction(s, d, pi, R, dt).theta;
-        theta_face = std::min(theta_face, 1.0);
+        const double theta_face = solids_face_fraction(d, pi, R, dt);
         const IntVec3 D = um(R) > 0 ? L : R;
         double fluid = 0;
         for (std::size_t q = 0; q < nm; ++q)

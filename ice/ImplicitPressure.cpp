@@ -145,6 +145,7 @@ void IceComponent::implicit_pressure_solve(double dt, int step) {
   for (;; ++it) {
     compute_face_velocities(dt, press_CC_);
     add_exchange_to_face_velocities(dt);
+    if (coupled && it == 0) freeze_solid_face_fractions(dt);  // IceLagrangianFlux.cpp: why
     max_rhs = layout_.max(pressure_residual(dt));  // the same on every rank: one decision
     if (max_rhs < im.outer_iteration_tolerance) break;
     if (it == im.max_outer_iterations) {
@@ -161,6 +162,8 @@ void IceComponent::implicit_pressure_solve(double dt, int step) {
       throw StepRestart{os.str()};
     }
     if (coupled) assemble_pressure_matrix(dt);
+    if (implicit_trace_enabled()) trace_outer_iteration(dt, step, it, max_rhs);
+    if (outer_hook_) outer_hook_(*this, dt, step, it);
     const LinearSolveResult r = pressure_solver_->solve(stencil_, rhs_, delta_p_);
     if (!r.converged) {
       std::ostringstream os;

@@ -23,29 +23,33 @@
 // solid's flux F_s comes from the particles' motion and does not change with
 // p, so the solid has no a_f of its own. A fluid m crosses through the face
 // area the solids leave,
-//   F_m = phi_m (1 - sum_s theta_s,face) r_m,   r_m = theta_m,D / sum_fluids theta_D,
-//   theta_s,face = F_s / phi_s  (clamped to [0, 1]),  phi = u^ME dt/dx,
-// and both phi_m and phi_s change with dp (the solid's face velocity is the
-// one the exchange locks the fluid to). Differentiating (F_s fixed):
-//   dF_m = r_m [ (1 - theta_face) dphi_m + sum_s theta_s,face (phi_m/phi_s) dphi_s ],
-// the second sum over the solids whose theta_s,face = F_s/phi_s is strictly
-// inside (0, 1). With the fluid locked to the solid (phi_m = phi_s, svFC_m
-// = svFC_s) the bracket is the full face, dphi_m: in a cell the solid fills
-// (theta_gas ~ 1e-4) the fluid still answers with the whole face, which the
-// ICE matrix (theta_f ~ 1e-4) underestimated by 1e4 (session 14: the
-// 2-cycle at step 10 of SteadyBurn_2dRT). Terms of the derivative left out:
-// the switch of the donor cell D and of the clamps, and the positivity limit of
-// scale_fluid_flux (a factor <= 1 on the flux, only in cells with a trace of
-// fluid; leaving it out overestimates a_f, which slows the outer iteration
-// but cannot make it oscillate); a negative (phi_m/phi_s) (the fluid crossing
-// against the solid) is dropped (keeps the matrix an M-matrix). The outer
-// iterations carry the exact residual, so these only change how fast it
+//   F_m = phi_m theta_m,slab chi L_D,  chi = (1 - theta_face) / sum_fluids theta_D,
+// phi_m = u^ME_m dt/dx, theta_m,slab the advected value of the donor's
+// volume fraction (theta_m,D at first order, the limited slab value at second
+// order), L_D <= 1 the positivity limit of the donor cell (scale_fluid_flux).
+// theta_face (the solids' face fractions) is held fixed over the outer
+// iterations (freeze_solid_face_fractions: F_s/phi_s jumps where phi_s
+// changes sign, the SteadyBurn_2dRT cycle), so F_m is linear in phi_m with
+// the slope s_m = F_m/phi_m (fluid_face_shares; at phi_m = 0 the first-order
+// value theta_m,R chi L_R of the donor R) and
+//   a_f = sum_fluids s_m svFC_m dt^2/dx^2.
+// Left out of the derivative (measured against finite differences by
+// IceComponent::implicit_jacobian_row, ImplicitPressureCheck.cpp): the
+// switch of the donor cell where phi_m changes sign (F_m is continuous
+// there), the slab value's own dependence on phi_m (O(phi) at second order)
+// and the limit's L_D (its total outflow is fixed where it is active). The
+// outer iterations carry the exact residual, so these change only how fast it
 // converges, not the answer.
+// Session 15 used a_f = r_m [(1 - theta_face) svFC_m + sum_s theta_s,face
+// (phi_m/phi_s) svFC_s] with theta_face recomputed at every iterate: the
+// derivative of a residual that jumps (above), and first-order shares where
+// the flux is second order (2x the Jacobian in trace-gas cells).
 #include <algorithm>
 #include <cmath>
 
 #include "core/grid/Loop.h"
 #include "ice/Exchange.h"
+#include "ice/IceAdvection.h"
 #include "ice/IceComponent.h"
 
 namespace tephra {
@@ -65,17 +69,7 @@ double IceComponent::pressure_face_coefficient(int d, std::size_t pi, const IntV
     svFC[m] = sv[m];
   }
   if (nm > 1) solve_exchange(dt, {theta, nm}, {sv, nm}, {}, setup_.K, {svFC, nm});
-  // MPMICE: the solids' face fractions (the same for every fluid).
-  bool coupled = false;
-  double theta_face = 0;
-  SolidFaceFraction sf[kMaxExchangeMaterials];
-  for (std::size_t s = 0; s < nm; ++s)
-    if (has_lagrangian_flux(s)) {
-      coupled = true;
-      sf[s] = solid_face_fraction(s, d, pi, R, dt);
-      theta_face += sf[s].theta;
-    }
-  const bool face_closed = theta_face >= 1.0;  // the solids cover the face: no fluid crosses
+  const bool coupled = !imp_share_.empty();  // MPMICE: fluid_face_shares ran for this iterate
   double a = 0;
   for (std::size_t m = 0; m < nm; ++m) {
     if (boundary) {
@@ -86,21 +80,40 @@ double IceComponent::pressure_face_coefficient(int d, std::size_t pi, const IntV
       a += theta[m] * svFC[m];
       continue;
     }
-    if (setup_.materials[m].lagrangian || face_closed) continue;
-    const IceMaterialFields& f = mats_[m];
-    const double um = f.vel_FCME.at(d, pi)(R);
-    const IntVec3 D = um > 0 ? L : R;  // donor cell, as scale_fluid_flux
-    double fluid = 0;
-    for (std::size_t q = 0; q < nm; ++q)
-      if (!setup_.materials[q].lagrangian) fluid += mats_[q].vol_frac_CC[pi](D);
-    const double r = f.vol_frac_CC[pi](D) / fluid;
-    double bracket = (1.0 - theta_face) * svFC[m];
-    const double phi_m = um * dt / g.dx[d];
-    for (std::size_t s = 0; s < nm; ++s)
-      if (sf[s].varies) bracket += sf[s].theta * std::max(0.0, phi_m / sf[s].phi) * svFC[s];
-    a += r * bracket;
+    if (setup_.materials[m].lagrangian) continue;  // the particles' flux: no response to p
+    a += std::max(0.0, imp_share_[m].at(d, pi)(R)) * svFC[m];
   }
   return a * r2;
+}
+
+// s_m = F_m/phi_m of every fluid on every face at the current iterate (the
+// comment at the top): the fluid's volume flux as sum_volume_flux_and_kappa
+// computes it (density_fluxes, scale_fluid_flux) divided by phi_m.
+void IceComponent::fluid_face_shares(double dt) {
+  const Grid& g = setup_.grid;
+  const std::size_t nm = mats_.size();
+  imp_share_.resize(nm);
+  for (std::size_t m = 0; m < nm; ++m) {
+    if (setup_.materials[m].lagrangian) continue;
+    IceMaterialFields& f = mats_[m];
+    FaceScalars& share = imp_share_[m];
+    if (share.x.size() == 0) share = FaceScalars(g, 0);
+    density_fluxes(g, setup_.advection, f.vol_frac_CC, f.vel_FCME, dt, share);
+    scale_fluid_flux(m, dt, share);  // also leaves fluid m's chi and limit in lag_chi_, lag_limit_
+    for (std::size_t pi = 0; pi < g.patches.size(); ++pi)
+      for (int d = 0; d < 3; ++d) {
+        const double dt_dx = dt / g.dx[d];
+        GridArray<double>& s = share.at(d, pi);
+        const GridArray<double>& u = f.vel_FCME.at(d, pi);
+        const GridArray<double>& chi = lag_chi_.at(d, pi);
+        const IndexRange faces{g.patches[pi].lo, g.patches[pi].hi + IntVec3::Unit(d)};
+        for_each_cell(faces, [&](int i, int j, int k) {
+          const IntVec3 R(i, j, k);
+          const double phi = u(R) * dt_dx;
+          s(R) = phi != 0.0 ? s(R) / phi : f.vol_frac_CC[pi](R) * chi(R) * lag_limit_[pi](R);
+        });
+      }
+  }
 }
 
 // Stencil of every interior cell from the face coefficients; boundary faces as
@@ -109,6 +122,9 @@ double IceComponent::pressure_face_coefficient(int d, std::size_t pi, const IntV
 void IceComponent::assemble_pressure_matrix(double dt) {
   const Grid& g = setup_.grid;
   const std::size_t nm = mats_.size();
+  bool coupled = false;
+  for (std::size_t m = 0; m < nm; ++m) coupled = coupled || has_lagrangian_flux(m);
+  if (coupled) fluid_face_shares(dt);
   for (std::size_t pi = 0; pi < g.patches.size(); ++pi) {
     const Patch& patch = g.patches[pi];
     for_each_cell(patch.cells(), [&](int i, int j, int k) {

@@ -42,6 +42,7 @@ class MpmIceComponent final : public Component, private MpmCoupling, private Sol
   // The particle queries the burn models make (DDT1's crack-history lookup; tests).
   const SolidBurnSupport& burn_support() const { return *this; }
   const IceComponent& ice() const { return *ice_; }
+  IceComponent& mutable_ice() { return *ice_; }  // tests: hooks of the implicit pressure
   // Particle pressure p_p - p_ref of MPM material m from the last step (step 7).
   const std::vector<double>& particle_pressure(std::size_t m) const { return particle_pressure_[m]; }
 
