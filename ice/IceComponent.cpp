@@ -28,10 +28,22 @@ IceComponent::IceComponent(IceSetup setup) : setup_(std::move(setup)) {}
 // with mixing made explicit): each cell, extra cells included, is sampled at
 // res0 x res1 x res2 sub-cell centres; a point belongs to the first source of
 // the material that contains it. With f_s the fraction of points of source s
-// (density rho_s, temperature T_s, velocity u_s) and f = sum f_s:
-//   rho_CC = sum f_s rho_s   (tiny_rho * rho_0 where f = 0, source 0's state),
+// (density rho_s, temperature T_s, velocity u_s, <volumeFraction> v_s, 1 when
+// absent) and f = sum v_s f_s:
+//   rho_CC = sum v_s f_s rho_s,
 //   u, T   = mass-weighted averages over the sources,
 //   rho_micro = rho_CC / f.
+// Where f = 0 the material is absent: rho_CC = tiny_rho rho_s with the state
+// of the last source that covers the cell (Uintah's IveBeenHere rule: a
+// <volumeFraction>0 piece still sets rho_micro, T and u there), source 0's
+// state where no source covers it.
+// Uintah's rule for v_s (ICEMaterial::initializeCells, several materials):
+// theta = v_s count_s/total replaces the fraction earlier pieces gave the
+// cell, theta += count_s/total without it. Identical to the above when the
+// material's pieces do not overlap, except that Uintah's replacement also
+// zeroes, in the cells a volumeFraction piece does not cover, what earlier
+// pieces gave them; Tephra keeps it (a deck relying on that fails Uintah's
+// MPMICE sum-to-one check anyway).
 // The pressure then follows from rho and T through the EOS (the
 // equilibration below; the decks' <pressure> values are not used, as in
 // Uintah, decks README "quirks").
@@ -111,9 +123,11 @@ void IceComponent::initialize() {
             }
         double frac = 0, mass = 0, energy = 0;
         Vec3 mom = Vec3::Zero();
+        std::size_t last_covering = 0;  // source 0 where no source covers the cell
         for (std::size_t s = 0; s < spec.sources.size(); ++s) {
-          const double fs = double(count[s]) / total;
+          if (count[s] > 0) last_covering = s;
           const IceSource& src = spec.sources[s];
+          const double fs = src.volume_fraction * double(count[s]) / total;
           frac += fs;
           mass += fs * src.density;
           mom += fs * src.density * src.velocity;
@@ -125,11 +139,11 @@ void IceComponent::initialize() {
           f.temp_CC[pi](i, j, k) = energy / mass;
           f.sp_vol_CC[pi](i, j, k) = frac / mass;
         } else {
-          const IceSource& s0 = spec.sources[0];
-          f.rho_CC[pi](i, j, k) = spec.tiny_rho * s0.density;
-          f.vel_CC[pi](i, j, k) = s0.velocity;
-          f.temp_CC[pi](i, j, k) = s0.temperature;
-          f.sp_vol_CC[pi](i, j, k) = 1.0 / s0.density;
+          const IceSource& sc = spec.sources[last_covering];
+          f.rho_CC[pi](i, j, k) = spec.tiny_rho * sc.density;
+          f.vel_CC[pi](i, j, k) = sc.velocity;
+          f.temp_CC[pi](i, j, k) = sc.temperature;
+          f.sp_vol_CC[pi](i, j, k) = 1.0 / sc.density;
         }
       });
     }
@@ -180,9 +194,10 @@ void IceComponent::fill_cell_gas_cv(std::size_t m, std::size_t pi) {
 // (rho_micro = 1/sp_vol, T, u) and its share f_m / sum f of the fluid
 // geometry, and fills the volume the solids leave:
 //   theta_m = f_m (1 - theta_s) / sum_f f,   rho_CC_m = theta_m / sp_vol_m.
-// A cell the fluid geometry leaves empty (sum f = 0) is filled by the first
-// fluid material in its first source's state. (Departure from Uintah, which
-// keeps the geometric fractions; docs/mpmice.md.)
+// A cell the fluid geometry leaves empty (sum f = 0, e.g. a <volumeFraction>
+// 0 piece under the solid) is filled by the first fluid material in the micro
+// state initialize() gave it there. (Departure from Uintah, which keeps the
+// geometric fractions; docs/mpmice.md.)
 void IceComponent::exchange_cell_state(std::size_t m) {
   IceMaterialFields& f = mats_[m];
   halo_->exchange(f.rho_CC);
@@ -220,12 +235,9 @@ void IceComponent::fluids_fill_volume_left_by_solids() {
             mats_[m].rho_CC[pi](c) = std::max(theta / mats_[m].sp_vol_CC[pi](c), spec.tiny_rho * spec.sources[0].density);
           }
       } else {
-        const IceSource& s0 = setup_.materials[first_fluid].sources[0];
         IceMaterialFields& f = mats_[first_fluid];
-        f.rho_CC[pi](c) = std::max(left * s0.density, setup_.materials[first_fluid].tiny_rho * s0.density);
-        f.sp_vol_CC[pi](c) = 1.0 / s0.density;
-        f.temp_CC[pi](c) = s0.temperature;
-        f.vel_CC[pi](c) = s0.velocity;
+        const double rho_micro = 1.0 / f.sp_vol_CC[pi](c);
+        f.rho_CC[pi](c) = std::max(left * rho_micro, setup_.materials[first_fluid].tiny_rho * rho_micro);
       }
     });
 }

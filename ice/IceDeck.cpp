@@ -76,9 +76,18 @@ IceSource parse_source(const DeckNode& go, GeometryRegistry& geometry) {
   s.density = positive(go, "density");
   s.pressure = positive(go, "pressure");
   s.temperature = positive(go, "temperature");
+  if (const DeckNode* vf = go.child("volumeFraction")) {
+    // -1 is Uintah's "absent" (GeometryObject's default), so it is read as absent.
+    const double v = vf->as_double();
+    if (v != -1.0) {
+      if (!(v >= 0.0 && v <= 1.0)) vf->fail("volumeFraction must be in [0, 1] (or -1, absent)");
+      s.volume_fraction = v;
+    }
+  }
   for (const DeckNode& c : go.children) {
     if (GeometryRegistry::is_piece_name(c.name)) continue;
-    static const std::set<std::string> known = {"res", "velocity", "density", "pressure", "temperature"};
+    static const std::set<std::string> known = {"res", "velocity", "density", "pressure", "temperature",
+                                                "volumeFraction"};
     if (!known.count(c.name)) c.missing_feature("ICE <geom_object> initial value <" + c.name + ">");
   }
   return s;

@@ -26,6 +26,11 @@ struct IceSource {
   double density = 0;       // micro density rho (Uintah's rho_micro)
   double pressure = 0;      // read; ICE recomputes the pressure from rho and T through the EOS
   double temperature = 0;
+  // <volumeFraction> (optional, in [0, 1]): the material's volume fraction in
+  // the cells this piece covers, theta = volumeFraction x (covered share of
+  // the cell), where Uintah's default (absent) is the covered share itself.
+  // Uintah's ICEMaterial::initializeCells; IceComponent::initialize.
+  double volume_fraction = 1.0;
 };
 
 struct IceMaterialSpec {

@@ -47,6 +47,13 @@ ParticleSource parse_geom_object(const DeckNode& go, GeometryRegistry& geometry)
   s.velocity = go.get_vec3("velocity");
   s.temperature = go.get_double("temperature");
   s.color = go.get_double("color", 0.0);
+  // Uintah's ParticleCreator gives a particle the mass rho0 V volumeFraction
+  // (absent or -1: rho0 V). Only the value that changes nothing is read.
+  if (const DeckNode* vf = go.child("volumeFraction")) {
+    const double v = vf->as_double();
+    if (v != 1.0 && v != -1.0)
+      vf->missing_feature("MPM <geom_object><volumeFraction> other than 1 (Uintah's particle mass rho0 V volumeFraction)");
+  }
   return s;
 }
 
