@@ -137,7 +137,12 @@ TEST(TabularEos, MurnaghanTableConvergesAtSecondOrder) {
 
 // ---------------------------------------------------------------- the model
 ConstitutiveModelP murnaghan_model(int n) {
-  const std::string path = test::scratch_dir("tabular_eos_model") + "/murnaghan.json";
+  // One folder per test: ctest runs the tests that call this in parallel
+  // processes, and scratch_dir empties its folder (a shared one raced).
+  const std::string path =
+      test::scratch_dir(std::string("tabular_eos_model_") +
+                        ::testing::UnitTest::GetInstance()->current_test_info()->name()) +
+      "/murnaghan.json";
   std::ofstream(path) << murnaghan_table_json(0.7, 1.5, n);
   test::MapModelParameters p;
   p.strings = {{"filename", path}, {"independent_variables", "DensityRatio"}, {"dependent_variables", "Pressure"}};
