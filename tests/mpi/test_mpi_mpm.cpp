@@ -30,11 +30,17 @@
 #include "core/deck/DeckLoader.h"
 #include "core/io/OutputFrame.h"
 #include "core/parallel/Ranks.h"
+#include "tests/mpi/RankCompare.h"
 #include "mpm/MpmComponent.h"
 #include "tests/support/TestPaths.h"
 
 namespace tephra {
 namespace {
+
+using test::flat;
+using test::own_ids;
+using test::particles_here;
+using test::relative_difference;
 
 DeckNode& child(DeckNode& n, const std::string& name) {
   for (DeckNode& c : n.children)
@@ -99,29 +105,6 @@ const std::set<std::string> kParticleLabels = {"p.velocity", "p.stress", "p.defo
 const std::set<std::string> kSums = {"KineticEnergy", "StrainEnergy", "TotalMass", "TotalMomentum",
                                      "CenterOfMassPosition"};
 
-// max |a - b| / max |a| over the values (0 if a is all zero).
-double relative_difference(const std::vector<double>& a, const std::vector<double>& b) {
-  EXPECT_EQ(a.size(), b.size());
-  double scale = 0, diff = 0;
-  for (std::size_t i = 0; i < std::min(a.size(), b.size()); ++i) {
-    scale = std::max(scale, std::abs(a[i]));
-    diff = std::max(diff, std::abs(a[i] - b[i]));
-  }
-  return scale > 0 ? diff / scale : diff;
-}
-
-std::vector<double> flat(const std::vector<Vec3>& v) {
-  std::vector<double> out;
-  for (const Vec3& x : v) out.insert(out.end(), x.data(), x.data() + 3);
-  return out;
-}
-
-std::set<long long> own_ids(const MpmComponent& c) {
-  std::set<long long> ids;
-  for (const MpmMaterial& m : c.materials()) ids.insert(m.particles.id.begin(), m.particles.id.end());
-  return ids;
-}
-
 // Steps both runs to the deck's end with the whole run's dt; returns the worst
 // relative difference over the particle fields and .dat sums at the end.
 double run_and_compare(const std::string& patches, const std::string& interpolator, const std::string& contact,
@@ -135,7 +118,7 @@ double run_and_compare(const std::string& patches, const std::string& interpolat
   const double max_time = std::min(2.0, time.get_double("maxTime"));
   std::size_t total = 0;
   for (const MpmMaterial& m : whole.mpm->materials()) total += m.particles.size();
-  const std::set<long long> start_ids = own_ids(*ranks.mpm);
+  const std::set<long long> start_ids = own_ids(ranks.mpm->materials());
   std::set<long long> ever_left;  // ids that were on this rank at the start and left it at some step
   // TotalMomentum is 0 to round-off (point-symmetric disks): its scale is sum m |v| = m0 |v0|.
   const double momentum_scale = whole.mpm->reductions({"TotalMass"})["TotalMass"][0] * std::sqrt(0.02);
@@ -156,7 +139,7 @@ double run_and_compare(const std::string& patches, const std::string& interpolat
     double sum = 0;
     for (double c : counts) sum += c;
     EXPECT_EQ(sum, double(total)) << "step " << step;
-    const std::set<long long> now = own_ids(*ranks.mpm);
+    const std::set<long long> now = own_ids(ranks.mpm->materials());
     for (long long id : start_ids)
       if (!now.count(id)) ever_left.insert(id);
   }

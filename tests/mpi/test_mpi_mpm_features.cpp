@@ -37,10 +37,16 @@
 #include "core/io/OutputFrame.h"
 #include "core/io/StateArchive.h"
 #include "core/parallel/Ranks.h"
+#include "tests/mpi/RankCompare.h"
 #include "mpm/MpmComponent.h"
 
 namespace tephra {
 namespace {
+
+using test::flat;
+using test::own_ids;
+using test::particles_here;
+using test::relative_difference;
 
 std::string material(double K, double G, const std::string& geom_objects) {
   std::ostringstream s;
@@ -169,35 +175,6 @@ const std::set<std::string> kParticleLabels = {"p.velocity", "p.stress", "p.defo
 const std::set<std::string> kSums = {"KineticEnergy", "StrainEnergy", "TotalMass", "TotalMomentum",
                                      "ThermalEnergy"};
 
-// max |a - b| / max |a| (|a - b| when a is all zero).
-double relative_difference(const std::vector<double>& a, const std::vector<double>& b) {
-  EXPECT_EQ(a.size(), b.size());
-  double scale = 0, diff = 0;
-  for (std::size_t i = 0; i < std::min(a.size(), b.size()); ++i) {
-    scale = std::max(scale, std::abs(a[i]));
-    diff = std::max(diff, std::abs(a[i] - b[i]));
-  }
-  return scale > 0 ? diff / scale : diff;
-}
-
-std::vector<double> flat(const std::vector<Vec3>& v) {
-  std::vector<double> out;
-  for (const Vec3& x : v) out.insert(out.end(), x.data(), x.data() + 3);
-  return out;
-}
-
-std::set<long long> own_ids(const MpmComponent& c) {
-  std::set<long long> ids;
-  for (const MpmMaterial& m : c.materials()) ids.insert(m.particles.id.begin(), m.particles.id.end());
-  return ids;
-}
-
-std::size_t particles_here(const MpmComponent& c) {
-  std::size_t n = 0;
-  for (const MpmMaterial& m : c.materials()) n += m.particles.size();
-  return n;
-}
-
 // Worst relative difference of the gathered particle fields and the .dat sums of b against a.
 double compare(const MpmComponent& a, const MpmComponent& b) {
   OutputFrame fa, fb;
@@ -260,8 +237,8 @@ TEST_P(MpiMpmFeatures, RanksGiveTheOneRankAnswerToRoundOff) {
   MpmRun whole = start(text, true);
   MpmRun ranks = start(text, false);
   EXPECT_EQ(ranks.mpm->layout().distributed, world_ranks().size > 1);
-  const std::size_t total = particles_here(*whole.mpm);
-  const std::set<long long> start_ids = own_ids(*ranks.mpm);
+  const std::size_t total = particles_here(whole.mpm->materials());
+  const std::set<long long> start_ids = own_ids(ranks.mpm->materials());
   std::set<long long> ever_left;
   double t = 0, worst_dt = 0;
   for (int step = 1; step <= c.steps; ++step) {
@@ -271,9 +248,9 @@ TEST_P(MpiMpmFeatures, RanksGiveTheOneRankAnswerToRoundOff) {
     ranks.mpm->advance(t, dt, step);
     t += dt;
     double sum = 0;
-    for (double n : all_gather(std::vector<double>{double(particles_here(*ranks.mpm))})) sum += n;
+    for (double n : all_gather(std::vector<double>{double(particles_here(ranks.mpm->materials()))})) sum += n;
     EXPECT_EQ(sum, double(total)) << "step " << step;
-    const std::set<long long> now = own_ids(*ranks.mpm);
+    const std::set<long long> now = own_ids(ranks.mpm->materials());
     for (long long id : start_ids)
       if (!now.count(id)) ever_left.insert(id);
   }

@@ -56,12 +56,18 @@
 #include "core/io/OutputFrame.h"
 #include "core/io/StateArchive.h"
 #include "core/parallel/Ranks.h"
+#include "tests/mpi/RankCompare.h"
 #include "mpmice/MpmIceComponent.h"
 #include "tests/support/IceRuns.h"
 #include "tests/support/TestPaths.h"
 
 namespace tephra {
 namespace {
+
+using test::flat;
+using test::own_ids;
+using test::particles_here;
+using test::relative_difference;
 
 struct CoupledRun {
   std::unique_ptr<Deck> deck;
@@ -83,23 +89,6 @@ const std::set<std::string> kParticleLabels = {"p.velocity", "p.stress", "p.mass
 const std::set<std::string> kCellLabels = {"press_CC", "rho_CC", "vel_CC", "temp_CC", "sp_vol_CC",
                                            "SimpleBurn.onSurface", "SimpleBurn.BurningCell"};
 const std::set<std::string> kSums = {"TotalMass", "KineticEnergy", "TotalMomentum", "totalMassBurned"};
-
-// max |a - b| / max |a| (|a - b| when a is all zero).
-double relative_difference(const std::vector<double>& a, const std::vector<double>& b) {
-  EXPECT_EQ(a.size(), b.size());
-  double scale = 0, diff = 0;
-  for (std::size_t i = 0; i < std::min(a.size(), b.size()); ++i) {
-    scale = std::max(scale, std::abs(a[i]));
-    diff = std::max(diff, std::abs(a[i] - b[i]));
-  }
-  return scale > 0 ? diff / scale : diff;
-}
-
-std::vector<double> flat(const std::vector<Vec3>& v) {
-  std::vector<double> out;
-  for (const Vec3& x : v) out.insert(out.end(), x.data(), x.data() + 3);
-  return out;
-}
 
 OutputFrame frame_of(const MpmIceComponent& c) {
   OutputFrame f;
@@ -230,18 +219,6 @@ FieldDiffs sum_differences(const MpmIceComponent& a, const MpmIceComponent& b) {
   return out;
 }
 
-std::size_t particles_here(const MpmIceComponent& c) {
-  std::size_t n = 0;
-  for (const MpmMaterial& m : c.mpm().materials()) n += m.particles.size();
-  return n;
-}
-
-std::set<long long> own_ids(const MpmIceComponent& c) {
-  std::set<long long> ids;
-  for (const MpmMaterial& m : c.mpm().materials()) ids.insert(m.particles.id.begin(), m.particles.id.end());
-  return ids;
-}
-
 // The deck's time rule on the reference run `ref`: delt_init first, then
 // timestep_multiplier * stable step (at most delt_max).
 struct Stepper {
@@ -282,8 +259,8 @@ TEST_P(MpiMpmIce, RanksGiveTheOneRankAnswerToRoundOff) {
   perturb_particles(*pert.c);
   EXPECT_EQ(ranks.c->mpm().layout().distributed, world_ranks().size > 1);
   EXPECT_EQ(ranks.c->ice().layout().owner, ranks.c->mpm().layout().owner) << "ICE takes MPM's patch owners";
-  const std::size_t total = particles_here(*whole.c);
-  const std::set<long long> start_ids = own_ids(*ranks.c);
+  const std::size_t total = particles_here(whole.c->mpm().materials());
+  const std::set<long long> start_ids = own_ids(ranks.c->mpm().materials());
   std::set<long long> ever_left;
   Stepper st(*whole.deck);
   double worst_dt = 0, pert_dt = 0, worst_burned = 0, pert_burned = 0, burned = 0;
@@ -296,11 +273,11 @@ TEST_P(MpiMpmIce, RanksGiveTheOneRankAnswerToRoundOff) {
     ranks.c->advance(st.t, dt, st.step);
     pert.c->advance(st.t, dt, st.step);
     st.t += dt;
-    const std::vector<double> counts = all_gather({double(particles_here(*ranks.c))});
+    const std::vector<double> counts = all_gather({double(particles_here(ranks.c->mpm().materials()))});
     double sum = 0;
     for (double x : counts) sum += x;
     EXPECT_EQ(sum, double(total)) << "step " << st.step;
-    const std::set<long long> now = own_ids(*ranks.c);
+    const std::set<long long> now = own_ids(ranks.c->mpm().materials());
     for (long long id : start_ids)
       if (!now.count(id)) ever_left.insert(id);
     if (const SolidBurnModel* b = burn_of(*whole.c)) {

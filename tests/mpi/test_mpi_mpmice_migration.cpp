@@ -27,6 +27,7 @@
 #include "core/deck/DeckLoader.h"
 #include "core/io/OutputFrame.h"
 #include "core/parallel/Ranks.h"
+#include "tests/mpi/RankCompare.h"
 #include "core/grid/Loop.h"
 #include "ice/IceFields.h"
 #include "mpmice/MpmIceComponent.h"
@@ -36,6 +37,11 @@
 
 namespace tephra {
 namespace {
+
+using test::flat;
+using test::own_ids;
+using test::particles_here;
+using test::relative_difference;
 
 constexpr double kVx = 40.0;  // m/s
 
@@ -57,38 +63,16 @@ CoupledRun start(bool whole) {
   return r;
 }
 
-double relative_difference(const std::vector<double>& a, const std::vector<double>& b) {
-  EXPECT_EQ(a.size(), b.size());
-  double scale = 0, diff = 0;
-  for (std::size_t i = 0; i < std::min(a.size(), b.size()); ++i) {
-    scale = std::max(scale, std::abs(a[i]));
-    diff = std::max(diff, std::abs(a[i] - b[i]));
-  }
-  return scale > 0 ? diff / scale : diff;
-}
-
 double bound_of(const std::string& label) {  // as tests/mpi/test_mpi_mpmice.cpp
   return label == "p.velocity" || label == "p.stress" || label == "vel_CC" ? 1e-9 : 1e-11;
-}
-
-std::size_t particles_here(const MpmIceComponent& c) {
-  std::size_t n = 0;
-  for (const MpmMaterial& m : c.mpm().materials()) n += m.particles.size();
-  return n;
-}
-
-std::set<long long> own_ids(const MpmIceComponent& c) {
-  std::set<long long> ids;
-  for (const MpmMaterial& m : c.mpm().materials()) ids.insert(m.particles.id.begin(), m.particles.id.end());
-  return ids;
 }
 
 TEST(MpiMpmIceMigration, BlockCrossingTheRankCutKeepsEveryParticleOnce) {
   CoupledRun whole = start(true);
   CoupledRun ranks = start(false);
   EXPECT_EQ(ranks.c->mpm().layout().distributed, world_ranks().size > 1);
-  const std::size_t total = particles_here(*whole.c);
-  const std::set<long long> start_ids = own_ids(*ranks.c);
+  const std::size_t total = particles_here(whole.c->mpm().materials());
+  const std::set<long long> start_ids = own_ids(ranks.c->mpm().materials());
   std::set<long long> ever_left;
   const DeckNode& time = whole.deck->root.require_child("Time");
   const double mult = time.get_double("timestep_multiplier"), delt_init = time.get_double("delt_init", 0.0);
@@ -103,9 +87,9 @@ TEST(MpiMpmIceMigration, BlockCrossingTheRankCutKeepsEveryParticleOnce) {
     ranks.c->advance(t, dt, step);
     t += dt;
     double sum = 0;
-    for (double n : all_gather(std::vector<double>{double(particles_here(*ranks.c))})) sum += n;
+    for (double n : all_gather(std::vector<double>{double(particles_here(ranks.c->mpm().materials()))})) sum += n;
     EXPECT_EQ(sum, double(total)) << "step " << step;
-    const std::set<long long> now = own_ids(*ranks.c);
+    const std::set<long long> now = own_ids(ranks.c->mpm().materials());
     for (long long id : start_ids)
       if (!now.count(id)) ever_left.insert(id);
   }
