@@ -56,6 +56,7 @@
 #include "core/io/OutputFrame.h"
 #include "core/io/StateArchive.h"
 #include "core/parallel/Ranks.h"
+#include "tests/mpi/MpmIceRoundOff.h"
 #include "tests/mpi/RankCompare.h"
 #include "mpmice/MpmIceComponent.h"
 #include "tests/support/IceRuns.h"
@@ -68,6 +69,12 @@ using test::flat;
 using test::own_ids;
 using test::particles_here;
 using test::relative_difference;
+using test::expect_within_round_off;
+using test::FieldDiffs;
+using test::frame_differences;
+using test::kMargin;
+using test::kUlp;
+using test::perturb_particles;
 
 struct CoupledRun {
   std::unique_ptr<Deck> deck;
@@ -98,91 +105,6 @@ OutputFrame frame_of(const MpmIceComponent& c) {
     if (known.count(l)) labels.insert(l);
   c.fill_output(labels, f);  // gathered from every rank: particles in id order, cells in level order
   return f;
-}
-
-// Per field (label, material) the relative difference max |a - b| / max |a|
-// between two frames (particles by id, cells in level order).
-using FieldDiffs = std::map<std::pair<std::string, int>, double>;
-
-FieldDiffs frame_differences(const OutputFrame& a, const OutputFrame& b) {
-  FieldDiffs out;
-  auto note = [&](const std::string& label, int m, double d) {
-    double& x = out[{label, m}];
-    x = std::max(x, d);
-  };
-  EXPECT_EQ(a.particles.size(), b.particles.size());
-  for (std::size_t k = 0; k < std::min(a.particles.size(), b.particles.size()); ++k) {
-    const ParticleBlock& x = a.particles[k];
-    const ParticleBlock& y = b.particles[k];
-    EXPECT_EQ(x.id, y.id) << "every id exactly once, material " << x.material;
-    note("p.x", x.material, relative_difference(flat(x.position), flat(y.position)));
-    EXPECT_EQ(x.fields.size(), y.fields.size());
-    for (std::size_t f = 0; f < std::min(x.fields.size(), y.fields.size()); ++f)
-      note(x.fields[f].label, x.material, relative_difference(x.fields[f].values, y.fields[f].values));
-  }
-  EXPECT_EQ(a.grid_fields.size(), b.grid_fields.size());
-  EXPECT_GT(a.grid_fields.size(), 0u);
-  for (std::size_t k = 0; k < std::min(a.grid_fields.size(), b.grid_fields.size()); ++k) {
-    const FieldArray& x = a.grid_fields[k].data;
-    const FieldArray& y = b.grid_fields[k].data;
-    EXPECT_EQ(x.label, y.label);
-    EXPECT_EQ(x.material, y.material);
-    note(x.label, x.material, relative_difference(x.values, y.values));
-  }
-  return out;
-}
-
-// The round-off reference (backward error): the rank split only re-associates
-// the node sums at nodes two ranks reach, so the distributed node sums are the
-// exact sums of the particle terms each changed by a relative amount of at most
-// (n - 1) u, n the number of terms, u = 2^-53 (Higham, Accuracy and Stability
-// of Numerical Algorithms, 2nd ed., eq. (4.4)); the cut re-association adds one
-// rounding per rank, a few u in all. The answer's sensitivity to such a change
-// is measured on a third, whole-level run whose particles are each made
-// larger or smaller by 4u (mass, volume and reference volume together, so the
-// density and the stress are unchanged; the sign from a hash of the id, so
-// the weighted node means change too). The distributed answer must lie within
-// kMargin times that run's difference from the reference, per field.
-// kMargin = 10: the two perturbations have the same size but different sign
-// patterns, so their responses differ by a factor of order one, not ten; a
-// missing or doubled rank sum gives differences of order one (1e12 u).
-constexpr double kUlp = 0x1p-53;
-constexpr double kMargin = 10;
-
-void perturb_particles(MpmIceComponent& c) {
-  for (MpmMaterial& m : c.mpm().materials()) {
-    Particles& p = m.particles;
-    for (std::size_t i = 0; i < p.size(); ++i) {
-      std::uint64_t h = std::uint64_t(p.id[i]) * 0x9E3779B97F4A7C15ull;  // Fibonacci hash
-      h ^= h >> 29;
-      const double f = 1 + ((h >> 17) & 1 ? 4 : -4) * kUlp;
-      p.mass[i] *= f;
-      p.volume[i] *= f;
-      p.volume0[i] *= f;
-    }
-  }
-}
-
-// Asserts each field of `ranks` within kMargin x its round-off sensitivity
-// `pert` (both relative to the field's max, from frame_differences) + `floor`
-// (fields the perturbation leaves unchanged may still differ by a few
-// rounding steps: 8u for fields; for the .dat sums see sums_floor). Returns
-// the worst ratio ranks / (sensitivity + floor).
-double expect_within_round_off(const FieldDiffs& ranks, const FieldDiffs& pert, const char* what,
-                               double floor = 8 * kUlp) {
-  double worst = 0;
-  for (const auto& [key, d] : ranks) {
-    const auto it = pert.find(key);
-    const double sens = it == pert.end() ? 0.0 : it->second;
-    const double bound = kMargin * sens + floor;
-    EXPECT_LE(d, bound) << what << ": " << key.first << " material " << key.second << " differs " << d
-                        << ", its round-off sensitivity " << sens;
-    worst = std::max(worst, d / (sens + floor));
-    if (world_ranks().is_root() && std::getenv("TEPHRA_MPI_PRINT_FIELDS"))
-      std::printf("[ mpi-mpmice ] %s %-22s m%d ranks %.3e  1-ulp-perturbed %.3e\n", what, key.first.c_str(),
-                  key.second, d, sens);
-  }
-  return worst;
 }
 
 // The .dat sums, per label (material -1); TotalMomentum relative to
