@@ -341,8 +341,8 @@ void IceComponent::advance(double t, double dt, int step) {
   // Implicit, and explicit with source models: a step that fails (no pressure
   // convergence, or a negative Lagrangian specific volume, Uintah's
   // recomputeTimeStep) is redone as two steps of dt/2.
-  if (setup_.implicit.enabled || model_src_) {
-    advance_with_restarts(dt, step, 0);
+  if (redoes_failed_steps()) {
+    advance_with_restarts(t, dt, step);
     return;
   }
   advance_one(dt, step);
@@ -371,8 +371,9 @@ void IceComponent::advance_one(double dt, int step) {
 }
 
 // The coupled MPMICE step calls the step in two halves (the order of
-// advance_one, without the half-step restarts: the particles have moved, so a
-// failed implicit solve stops the run with exit 4).
+// advance_one). A StepRedoRequest (implicit pressure, Lagrangian specific
+// volume) goes up to MpmIceComponent::advance, which redoes the whole coupled
+// step with dt/2 (particles and cells restored).
 void IceComponent::coupled_pressure_phases(double dt, int step) {
   PhaseTimers& T = phase_timers();
   lag_theta_frozen_ = false;  // the solids' face fractions of this step are computed afresh
@@ -381,12 +382,7 @@ void IceComponent::coupled_pressure_phases(double dt, int step) {
     if (model_src_) { PhaseTimers::Scope s(T, "ICE: model sources"); compute_model_sources(dt, step); }
     {
       PhaseTimers::Scope s(T, "ICE: implicit pressure");
-      try {
-        implicit_pressure_solve(dt, step);
-      } catch (const StepRestart& r) {
-        throw NumericalFailure("MPMICE implicit pressure at step " + std::to_string(step) + ": " + r.why +
-                               " (a coupled step cannot be redone with a smaller time step)");
-      }
+      implicit_pressure_solve(dt, step);  // may ask for a redo (MpmIceComponent::advance)
     }
     { PhaseTimers::Scope s(T, "ICE: face pressure");              compute_face_pressure(); }
     return;

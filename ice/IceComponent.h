@@ -55,6 +55,9 @@ class IceComponent final : public Component {
   // and how many steps were redone with half the time step.
   int last_outer_iterations() const { return last_outer_iterations_; }
   int step_restarts() const { return step_restarts_; }
+  // Implicit pressure or source models: a step that cannot be completed
+  // (StepRedoRequest, core/sim/StepRedo.h) is redone with dt/2 (valid after initialize()).
+  bool redoes_failed_steps() const { return setup_.implicit.enabled || model_src_ != nullptr; }
   // Row c of the implicit pressure matrix (kCenter, kWest, ...) against the
   // one-sided finite-difference Jacobian -d(rhs_c)/dp_n of the residual at
   // the current iterate (ImplicitPressureCheck.cpp). Entries outside the
@@ -142,7 +145,8 @@ class IceComponent final : public Component {
   // Implicit pressure (ImplicitPressure.cpp): replaces the face velocities,
   // their exchange and the pressure increment of the explicit step.
   void advance_one(double dt, int step);
-  void advance_with_restarts(double dt, int step, int depth);
+  void advance_with_restarts(double t, double dt, int step);  // core/sim/StepRedo.h
+  std::function<void()> step_snapshot();  // the state a failed attempt puts back; returns the restore
   void implicit_pressure_solve(double dt, int step);
   void assemble_pressure_matrix(double dt);
   double pressure_residual(double dt);  // fills rhs_, returns max |rhs| (its cell: max_rhs_cell_)
@@ -152,9 +156,6 @@ class IceComponent final : public Component {
   static bool implicit_trace_enabled();
   void trace_outer_iteration(double dt, int step, int it, double max_rhs);
   void sum_volume_flux_and_kappa(double dt);
-  struct StepRestart {
-    std::string why;
-  };
 
   // MPMICE volume fluxes (IceLagrangianFlux.cpp).
   bool has_lagrangian_flux(std::size_t m) const;

@@ -7,6 +7,7 @@
 
 #include "core/base/Errors.h"
 #include "core/grid/Loop.h"
+#include "core/sim/StepRedo.h"
 #include "ice/Diffusion.h"
 #include "ice/Equilibration.h"
 #include "ice/Exchange.h"
@@ -538,7 +539,7 @@ void IceComponent::lagrangian_values_and_exchange(double dt) {
   // Uintah's recomputeTimeStep: a non-positive M v_L cannot be advected; with
   // the step-restart machinery active (implicit, or source models) the step is
   // redone with dt/2, else the end-of-step state check stops the run.
-  if (setup_.implicit.enabled || model_src_) {
+  if (redoes_failed_steps()) {
     std::string why;  // the first bad cell of this rank; every rank restarts if any has one
     for (std::size_t m = 0; m < nm && why.empty(); ++m) {
       // An MPMICE solid's v_L is not advected (the particles carry the solid;
@@ -556,10 +557,8 @@ void IceComponent::lagrangian_values_and_exchange(double dt) {
     }
     if (layout_.any(!why.empty())) {
       if (why.empty()) why = "a bad Lagrangian specific volume on another MPI rank";
-      // MPMICE cannot redo the step (the particles have moved): stop with where and why.
-      for (const IceMaterialSpec& spec : setup_.materials)
-        if (spec.lagrangian) throw NumericalFailure("MPMICE Lagrangian values: " + why + " (a coupled step cannot be redone)");
-      throw StepRestart{why};
+      // ICE alone and MPMICE (the whole coupled step) redo the step with dt/2.
+      throw StepRedoRequest{why};
     }
   }
   // Boundary values of the Lagrangian state; output copies.

@@ -38,12 +38,17 @@
 // (a_f on the diagonal only); a Neumann pressure moves the extra cell with the
 // interior (a_f drops out). Periodic faces couple through hypre's periodic grid.
 //
-// Failure: a linear solve that does not reach its tolerance, or more than
-// iters_before_timestep_restart outer iterations, restarts the step. Uintah
-// recomputes the step with dt * 0.75 (ICE::recomputeDelT); Tephra's time loop
-// owns dt, so here the interval is redone as two steps of dt/2 (recursively,
-// at most kMaxRestartDepth halvings, then NumericalFailure). No convergence
-// in max_outer_iterations: NumericalFailure (Uintah: ConvergenceFailure).
+// Failure: a linear solve that does not reach its tolerance, more than
+// iters_before_timestep_restart outer iterations, or a diverging outer
+// iteration (max |R| above 101x its smallest value so far, Uintah's impICE.cc
+// test), asks for a redo of the step
+// (StepRedoRequest, core/sim/StepRedo.h). Uintah recomputes the step with
+// dt * 0.75 (ICE::recomputeDelT; MPMICE::recomputeDelT: dt/2); Tephra's time
+// loop owns dt, so the interval is redone as two steps of dt/2 (recursively,
+// at most kMaxStepHalvings halvings, then NumericalFailure), by ICE alone
+// (advance_with_restarts) and by MPMICE (the whole coupled step,
+// mpmice/MpmIceComponent.cpp). No convergence in max_outer_iterations:
+// NumericalFailure (Uintah: ConvergenceFailure).
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -51,17 +56,16 @@
 #include "core/base/Errors.h"
 #include "core/base/Log.h"
 #include "core/grid/Loop.h"
+#include "core/sim/StepRedo.h"
 #include "ice/IceBoundary.h"
 #include "ice/IceComponent.h"
 
 namespace tephra {
 
-namespace {
-constexpr int kMaxRestartDepth = 4;
-}
-
-void IceComponent::advance_with_restarts(double dt, int step, int depth) {
-  // The state a failed attempt must restore (everything else is recomputed).
+// The state a failed attempt must put back (everything else a step reads is
+// recomputed from it): the cell state, the pressure (the next Newton start),
+// and the source models' carried fields, scalars and sums.
+std::function<void()> IceComponent::step_snapshot() {
   std::vector<CellScalars> rho, temp, spv;
   std::vector<CellVectors> vel;
   for (const IceMaterialFields& f : mats_) {
@@ -70,30 +74,42 @@ void IceComponent::advance_with_restarts(double dt, int step, int depth) {
     spv.push_back(f.sp_vol_CC);
     vel.push_back(f.vel_CC);
   }
-  const CellScalars press = press_CC_;
-  try {
-    advance_one(dt, step);
-    return;
-  } catch (const StepRestart& r) {
-    if (depth >= kMaxRestartDepth)
-      throw NumericalFailure("ICE step " + std::to_string(step) + ": " + r.why + " after " +
-                             std::to_string(depth) + " halvings of the time step");
-    log::warning("ICE step " + std::to_string(step) + ": " + r.why +
-                 "; redoing the step as two steps of dt/2");
+  std::vector<std::pair<CellScalars*, CellScalars>> fields;
+  std::vector<std::pair<double*, double>> scalars;
+  std::vector<std::pair<PatchSums*, PatchSums>> sums;
+  for (const IceModelP& m : setup_.models) {
+    for (auto& [name, f] : m->state_fields()) fields.emplace_back(f, *f);
+    for (auto& [name, v] : m->state_scalars()) scalars.emplace_back(v, *v);
+    for (auto& [name, s] : m->state_sums()) sums.emplace_back(s, *s);
   }
-  for (std::size_t m = 0; m < mats_.size(); ++m) {
-    mats_[m].rho_CC = rho[m];
-    mats_[m].temp_CC = temp[m];
-    mats_[m].sp_vol_CC = spv[m];
-    mats_[m].vel_CC = vel[m];
-  }
-  press_CC_ = press;
-  ++step_restarts_;
-  const double t0 = time_;  // source models read the time at the start of each half
-  advance_with_restarts(0.5 * dt, step, depth + 1);
-  time_ = t0 + 0.5 * dt;
-  advance_with_restarts(0.5 * dt, step, depth + 1);
-  time_ = t0;
+  return [this, rho = std::move(rho), temp = std::move(temp), spv = std::move(spv), vel = std::move(vel),
+          press = press_CC_, fields = std::move(fields), scalars = std::move(scalars), sums = std::move(sums)]() {
+    for (std::size_t m = 0; m < mats_.size(); ++m) {
+      mats_[m].rho_CC = rho[m];
+      mats_[m].temp_CC = temp[m];
+      mats_[m].sp_vol_CC = spv[m];
+      mats_[m].vel_CC = vel[m];
+    }
+    press_CC_ = press;
+    for (const auto& [f, v] : fields) *f = v;
+    for (const auto& [d, v] : scalars) *d = v;
+    for (const auto& [s, v] : sums) *s = v;
+  };
+}
+
+// core/sim/StepRedo.h: the interval [t, t + dt] as one step, or (after a
+// StepRedoRequest) as two of dt/2; source models read the time of each part.
+void IceComponent::advance_with_restarts(double t, double dt, int step) {
+  StepRedo redo;
+  redo.who = "ICE";
+  redo.snapshot = [this] { return step_snapshot(); };
+  redo.attempt = [this, step](double t0, double h) {
+    time_ = t0;
+    advance_one(h, step);
+  };
+  advance_with_redo(redo, t, dt, step);
+  step_restarts_ += redo.redos;
+  time_ = t;
 }
 
 // rhs = -R(p) = sum_m A_m(u_f(p)) + term1 - sum theta kappa (p - p_eq); returns max |rhs|.
@@ -141,7 +157,7 @@ void IceComponent::implicit_pressure_solve(double dt, int step) {
   for (std::size_t m = 0; m < mats_.size(); ++m) coupled = coupled || has_lagrangian_flux(m);
   if (!coupled) assemble_pressure_matrix(dt);
   int it = 0;
-  double max_rhs = 0;
+  double max_rhs = 0, smallest = 0;
   for (;; ++it) {
     compute_face_velocities(dt, press_CC_);
     add_exchange_to_face_velocities(dt);
@@ -155,11 +171,20 @@ void IceComponent::implicit_pressure_solve(double dt, int step) {
          << im.outer_iteration_tolerance << residual_where() << ")";
       throw NumericalFailure(os.str());
     }
+    // Uintah (impICE.cc): a residual more than 100x above the smallest of the
+    // outer iterations so far is a diverging iteration: redo the step.
+    smallest = it == 0 ? max_rhs : std::min(smallest, max_rhs);
+    if (max_rhs - smallest > 100.0 * smallest) {
+      std::ostringstream os;
+      os << "the outer iteration diverges (max |residual| = " << max_rhs << " > 101 x the smallest so far, "
+         << smallest << residual_where() << ")";
+      throw StepRedoRequest{os.str()};
+    }
     if (it >= im.iters_before_timestep_restart) {
       std::ostringstream os;
       os << "more than iters_before_timestep_restart = " << im.iters_before_timestep_restart
          << " outer iterations (max |residual| = " << max_rhs << residual_where() << ")";
-      throw StepRestart{os.str()};
+      throw StepRedoRequest{os.str()};
     }
     if (coupled) assemble_pressure_matrix(dt);
     if (implicit_trace_enabled()) trace_outer_iteration(dt, step, it, max_rhs);
@@ -169,7 +194,7 @@ void IceComponent::implicit_pressure_solve(double dt, int step) {
       std::ostringstream os;
       os << "the hypre " << im.hypre.solver << " solve stopped at relative residual " << r.relative_residual
          << " after " << r.iterations << " iterations";
-      throw StepRestart{os.str()};
+      throw StepRedoRequest{os.str()};
     }
     for (std::size_t pi = 0; pi < g.patches.size(); ++pi) {
       for_each_cell(g.patches[pi].cells(), [&](int i, int j, int k) { press_CC_[pi](i, j, k) += delta_p_[pi](i, j, k); });

@@ -3,8 +3,10 @@
 #include "mpmice/MpmIceComponent.h"
 
 #include <algorithm>
+#include <memory>
 
 #include "core/base/PhaseTimers.h"
+#include "core/sim/StepRedo.h"
 
 namespace tephra {
 
@@ -55,7 +57,32 @@ double MpmIceComponent::stable_timestep() const {
 //   12.   advection of the fluids
 //   13.   solid du_c, dT_c -> nodes (v*_g) and particles (T_p)
 //   14.   grid BCs, G2P, x_p and v_p (MPM)
-void MpmIceComponent::advance(double t, double dt, int step) { mpm_->advance(t, dt, step); }
+//
+// Step redo (core/sim/StepRedo.h): with the implicit pressure or source
+// models, a phase that cannot complete the step (the implicit solve: outer
+// iterations past iters_before_timestep_restart or a linear solve short of
+// its tolerance; a non-positive Lagrangian specific volume of a fluid) throws
+// StepRedoRequest. The whole coupled step is then put back to its start (the
+// checkpoint arrays of both parts, save_state/load_state, which continue a
+// run bit for bit) and [t, t + dt] is run as two coupled steps of dt/2
+// (Uintah's MPMICE::recomputeDelT halves delT), at most kMaxStepHalvings
+// deep, then NumericalFailure (exit 4) naming the step, the cell and the why.
+void MpmIceComponent::advance(double t, double dt, int step) {
+  if (!ice_->redoes_failed_steps()) {
+    mpm_->advance(t, dt, step);
+    return;
+  }
+  StepRedo redo;
+  redo.who = "MPMICE";
+  redo.snapshot = [this]() -> std::function<void()> {
+    auto start = std::make_shared<StateArchive>();
+    save_state(*start);
+    return [this, start] { load_state(*start); };
+  };
+  redo.attempt = [this, step](double t0, double h) { mpm_->advance(t0, h, step); };
+  advance_with_redo(redo, t, dt, step);
+  step_redos_ += redo.redos;
+}
 
 void MpmIceComponent::after_interpolate_to_grid(double, double dt, int step) {
   PhaseTimers& T = phase_timers();

@@ -43,6 +43,8 @@ class MpmIceComponent final : public Component, private MpmCoupling, private Sol
   const SolidBurnSupport& burn_support() const { return *this; }
   const IceComponent& ice() const { return *ice_; }
   IceComponent& mutable_ice() { return *ice_; }  // tests: hooks of the implicit pressure
+  // Coupled steps redone with dt/2 so far (each redo counts once; core/sim/StepRedo.h).
+  int step_redos() const { return step_redos_; }
   // Particle pressure p_p - p_ref of MPM material m from the last step (step 7).
   const std::vector<double>& particle_pressure(std::size_t m) const { return particle_pressure_[m]; }
 
@@ -71,6 +73,7 @@ class MpmIceComponent final : public Component, private MpmCoupling, private Sol
   std::unique_ptr<IceComponent> ice_;
   double p_ref_;
   bool initialized_ = false;
+  int step_redos_ = 0;
   std::vector<std::vector<double>> particle_pressure_;  // per MPM material: p_p - p_ref
   Particles flux_particles_;  // scratch of solid_mass_fluxes
   NodeGrid flux_grid_;

@@ -16,6 +16,9 @@
 //    the periodic face wraps). Observed: |p/p0 - 1| 8.4e-13, |u - 1| 1.1e-11,
 //    centroid shift 0.25 to 1e-9 in 41 steps (second order). Implicit with knob 0 takes
 //    dt = cfl dx/|u|, explicit dt = cfl dx/(c + |u|): ratio (c + u)/u ~ 348.
+// 4. Step redo (core/sim/StepRedo.h): an implicit Sod step forced to ask for
+//    a redo is run as two steps of dt/2 and ends with the same bits as the
+//    run that took those two half steps.
 // 3. The unmodified orderAccuracy/ICE/rayleigh.ups (periodic in x,
 //    ImplicitSolver, TimestepControl aggressive with knob 0): u_x against
 //    Stokes' first problem u = U erfc(y / (2 sqrt(nu t))).
@@ -26,6 +29,7 @@
 #include <fstream>
 
 #include "core/grid/Loop.h"
+#include "core/sim/StepRedo.h"
 #include "tests/support/ExactRiemann.h"
 #include "tests/support/IceRuns.h"
 #include "tests/support/TestPaths.h"
@@ -177,6 +181,59 @@ TEST(IceImplicit, ConservativeTimestepIsTheSweptVolumeBound) {
     const double expected = 0.4 / (2.0 * knob * c * (1 / g.dx[0] + 1 / g.dx[1] + 1 / g.dx[2]));
     EXPECT_NEAR(r.ice->stable_timestep(), expected, 1e-12 * expected) << "knob " << knob;
   }
+}
+
+// Implicit Sod, N = 100, fixed dt = 1e-5 s (CFL ~0.4). At step 3 the first
+// outer iteration of the full-dt attempt throws StepRedoRequest (as a stalled
+// solve does); ICE restores the step's start (IceComponent::step_snapshot)
+// and runs two steps of dt/2. Expected: after 5 steps every array of the
+// restart state equals, bit for bit, that of the run whose step 3 is two
+// calls of dt/2; the run without the redo differs (the test can fail).
+TEST(IceImplicit, ForcedFailureRedoesTheStepAtHalfDt) {
+  set_thread_count(1);
+  auto edit = [](DeckNode& root) {
+    DeckNode& box = test::deck_node(root, {"Grid", "Level", "Box"});
+    test::deck_node(box, {"resolution"}).text = "[100,1,1]";
+    test::deck_node(box, {"upper"}).text = "[1,0.01,0.01]";
+    test::add_implicit_solver(root, "1.0");
+  };
+  const std::string deck = test::shared_dir() + "/decks/inputs/ICE/riemann_sm.ups";
+  test::IceRun forced = test::make_ice_run(deck, edit), halves = test::make_ice_run(deck, edit),
+               plain = test::make_ice_run(deck, edit);
+  const double dt = 1e-5;
+  int thrown = 0;
+  forced.ice->set_outer_iteration_hook([&](IceComponent&, double h, int step, int) {
+    if (step == 3 && h == dt && thrown++ == 0) throw StepRedoRequest{"forced by the test"};
+  });
+  for (int step = 1; step <= 5; ++step) {
+    const double t = (step - 1) * dt;
+    forced.ice->advance(t, dt, step);
+    plain.ice->advance(t, dt, step);
+    if (step == 3) {
+      halves.ice->advance(t, 0.5 * dt, step);
+      halves.ice->advance(t + 0.5 * dt, 0.5 * dt, step);
+    } else {
+      halves.ice->advance(t, dt, step);
+    }
+  }
+  auto differing = [](const IceComponent& a, const IceComponent& b) {
+    StateArchive sa, sb;
+    a.save_state(sa);
+    b.save_state(sb);
+    long long n = 0;
+    for (const auto& [name, va] : sa.all_doubles()) {
+      const std::vector<double>& vb = sb.doubles(name);
+      for (std::size_t i = 0; i < va.size() && i < vb.size(); ++i) n += va[i] != vb[i];
+    }
+    return n;
+  };
+  const long long d_halves = differing(*forced.ice, *halves.ice), d_plain = differing(*forced.ice, *plain.ice);
+  std::printf("ICE forced redo: %d redo(s); entries differing from the dt/2 run %lld, from the run without redo %lld\n",
+              forced.ice->step_restarts(), d_halves, d_plain);
+  EXPECT_EQ(forced.ice->step_restarts(), 1);
+  EXPECT_EQ(halves.ice->step_restarts(), 0);
+  EXPECT_EQ(d_halves, 0);
+  EXPECT_GT(d_plain, 0);
 }
 
 TEST(IceImplicit, UnmodifiedRayleighDeckMatchesStokesFirstProblem) {

@@ -18,6 +18,10 @@
 // 3. The outer iteration converges: at most 4 outer iterations per step.
 // 4. A solve that cannot converge (max_outer_iterations = 1 with an outer
 //    tolerance of 1e-300) stops with NumericalFailure (exit 4) naming the step.
+// 5. Step redo (core/sim/StepRedo.h, MpmIceComponent::advance): a step whose
+//    solve asks for a redo is put back and run as two steps of dt/2; the
+//    state is then the same bits as a run that took those two half steps;
+//    past kMaxStepHalvings halvings it is NumericalFailure naming the cell.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -25,6 +29,7 @@
 #include "core/base/Errors.h"
 #include "core/deck/DeckLoader.h"
 #include "core/sim/RunParameters.h"
+#include "core/sim/StepRedo.h"
 #include "core/grid/Loop.h"
 #include "mpmice/MpmIceComponent.h"
 #include "tests/support/IceRuns.h"
@@ -42,7 +47,7 @@ struct ImplicitRun {
 };
 
 ImplicitRun make_run(bool implicit, double block_speed, const std::string& outer_tol = "1e-10", int max_outer = 20,
-                     const std::string& inner_tol = "") {
+                     const std::string& inner_tol = "", int iters_before_restart = 10) {
   ImplicitRun r;
   r.deck = load_deck(test::source_dir() + "/inputs/mpmice/quiescent_block.ups");
   if (block_speed != 0.0)
@@ -52,6 +57,8 @@ ImplicitRun make_run(bool implicit, double block_speed, const std::string& outer
     test::add_implicit_solver(r.deck->root, "", outer_tol);
     test::deck_node(r.deck->root, {"CFD", "ICE", "ImplicitSolver", "max_outer_iterations"}).text =
         std::to_string(max_outer);
+    test::deck_node(r.deck->root, {"CFD", "ICE", "ImplicitSolver", "iters_before_timestep_restart"}).text =
+        std::to_string(iters_before_restart);
     if (!inner_tol.empty())
       test::deck_node(r.deck->root, {"CFD", "ICE", "ImplicitSolver", "Parameters", "tolerance"}).text = inner_tol;
   }
@@ -166,6 +173,86 @@ TEST(MpmIceImplicit, UnconvergedSolveIsANumericalFailure) {
     const std::string what = e.what();
     EXPECT_NE(what.find("implicit pressure at step"), std::string::npos) << what;
     EXPECT_NE(what.find("no convergence in 1 outer iterations"), std::string::npos) << what;
+  }
+}
+
+// Every array of the restart state (particles, nodes, cells, model state) of
+// two runs: the number of entries whose bits differ (NaN-free states).
+long long differing_entries(const ImplicitRun& a, const ImplicitRun& b) {
+  StateArchive sa, sb;
+  a.c->save_state(sa);
+  b.c->save_state(sb);
+  long long n = 0;
+  EXPECT_EQ(sa.all_doubles().size(), sb.all_doubles().size());
+  for (const auto& [name, va] : sa.all_doubles()) {
+    const std::vector<double>& vb = sb.doubles(name);
+    if (va.size() != vb.size()) {
+      n += static_cast<long long>(std::max(va.size(), vb.size()));
+      continue;
+    }
+    for (std::size_t i = 0; i < va.size(); ++i) n += va[i] != vb[i];
+  }
+  for (const auto& [name, va] : sa.all_ints()) n += va != sb.ints(name);
+  return n;
+}
+
+// 5a. Forced once: at step 3 the first outer iteration of the full-dt attempt
+// throws StepRedoRequest (as a stalled solve does, ImplicitPressure.cpp).
+// MPMICE restores the step's start (save_state/load_state) and runs
+// [t, t + dt] as two steps of dt/2, which converge. Expected: after 5 steps
+// the state equals, bit for bit, that of a run whose step 3 is two calls of
+// dt/2 (same step number) -- the redo starts from exactly the saved start and
+// leaves nothing of the failed attempt behind. Control: the run without the
+// forced failure differs from both (so the comparison can fail).
+TEST(MpmIceImplicit, ForcedFailureRedoesTheStepAtHalfDt) {
+  set_thread_count(1);
+  const double dt = 1e-5;
+  ImplicitRun forced = make_run(true, 5.0), halves = make_run(true, 5.0), plain = make_run(true, 5.0);
+  int thrown = 0;
+  forced.c->mutable_ice().set_outer_iteration_hook([&](IceComponent&, double h, int step, int) {
+    if (step == 3 && h == dt && thrown == 0) {
+      ++thrown;
+      throw StepRedoRequest{"forced by the test"};
+    }
+  });
+  run_fixed(forced, dt, 5);
+  run_fixed(plain, dt, 5);
+  run_fixed(halves, dt, 2);
+  halves.c->advance(halves.time, 0.5 * dt, 3);
+  halves.c->advance(halves.time + 0.5 * dt, 0.5 * dt, 3);
+  halves.time += dt;
+  halves.steps = 3;
+  run_fixed(halves, dt, 2);
+  const long long d_halves = differing_entries(forced, halves), d_plain = differing_entries(forced, plain);
+  std::printf("forced redo: %d redo(s); entries differing from the dt/2 run %lld, from the run without redo %lld\n",
+              forced.c->step_redos(), d_halves, d_plain);
+  EXPECT_EQ(thrown, 1);
+  EXPECT_EQ(forced.c->step_redos(), 1);
+  EXPECT_EQ(halves.c->step_redos(), 0);
+  EXPECT_EQ(d_halves, 0);
+  EXPECT_GT(d_plain, 0);
+}
+
+// 5b. A real failure at every level: iters_before_timestep_restart = 1 with
+// an outer tolerance of 1e-300 (unreachable; max_outer_iterations 20 is not
+// reached first). The first step that does not balance exactly asks for a
+// redo at dt, dt/2, dt/4, dt/8 and dt/16: 4 redos, then NumericalFailure
+// (exit 4) naming the step, the cell of the largest residual and the why.
+TEST(MpmIceImplicit, RedoLimitIsANumericalFailureNamingTheCell) {
+  set_thread_count(1);
+  ImplicitRun r = make_run(true, 5.0, "1e-300", 20, "1e-301", 1);
+  try {
+    run_fixed(r, 1e-5, 10);
+    FAIL() << "no NumericalFailure";
+  } catch (const NumericalFailure& e) {
+    const std::string what = e.what();
+    std::printf("redo limit after %d redos: %s\n", r.c->step_redos(), what.c_str());
+    EXPECT_EQ(e.code(), ExitCode::NumericalFailure);
+    EXPECT_EQ(r.c->step_redos(), kMaxStepHalvings);
+    EXPECT_NE(what.find("MPMICE step " + std::to_string(r.steps)), std::string::npos) << what;
+    EXPECT_NE(what.find("more than iters_before_timestep_restart = 1"), std::string::npos) << what;
+    EXPECT_NE(what.find("in cell ("), std::string::npos) << what;
+    EXPECT_NE(what.find("after 4 halvings"), std::string::npos) << what;
   }
 }
 
