@@ -107,7 +107,12 @@ void IceComponent::advance_with_restarts(double t, double dt, int step) {
     time_ = t0;
     advance_one(h, step);
   };
-  advance_with_redo(redo, t, dt, step);
+  try {
+    advance_with_redo(redo, t, dt, step);
+  } catch (const NumericalFailure&) {
+    step_restarts_ += redo.redos;  // the redos before the limit count too
+    throw;
+  }
   step_restarts_ += redo.redos;
   time_ = t;
 }

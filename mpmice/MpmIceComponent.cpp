@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <memory>
 
+#include "core/base/Errors.h"
 #include "core/base/PhaseTimers.h"
 #include "core/sim/StepRedo.h"
 
@@ -80,7 +81,12 @@ void MpmIceComponent::advance(double t, double dt, int step) {
     return [this, start] { load_state(*start); };
   };
   redo.attempt = [this, step](double t0, double h) { mpm_->advance(t0, h, step); };
-  advance_with_redo(redo, t, dt, step);
+  try {
+    advance_with_redo(redo, t, dt, step);
+  } catch (const NumericalFailure&) {
+    step_redos_ += redo.redos;  // the redos before the limit count too
+    throw;
+  }
   step_redos_ += redo.redos;
 }
 
