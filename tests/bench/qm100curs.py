@@ -22,7 +22,9 @@ Materials: 0 copper (MPM), 1 reactant, 2 product, 3 air.
 Front: the largest x of an axis cell (y = z = dx/2) whose reacted fraction
 F (saved on the reactant) is at least 0.5; speed: least-squares slope over
 the outputs with t >= T_FIT until the front first passes X_FIT_END (the x+
-face is at 50 mm). Wall velocity: the mean v_y of the copper particles of
+face is at 50 mm). Lead shock: the largest axis x with press_CC above the
+deck's ThresholdPressure (200 MPa), and the largest axis pressure: the
+shock-to-detonation build-up before any cell reaches F = 0.5. Wall velocity: the mean v_y of the copper particles of
 the outermost layer (initial y > 30.6 mm - dx/2) within 0.5 mm of
 x = 10, 20, 30, 40 mm, at every output.
 
@@ -50,6 +52,7 @@ DX = 0.5e-3
 R_OUT = 30.6e-3
 STATIONS = (0.010, 0.020, 0.030, 0.040)
 T_FIT, X_FIT_END = 2e-6, 0.045
+P_SHOCK = 2.0e8  # the deck's JWL++ ThresholdPressure: the lead shock starts the burn
 M_OVER_C = 8930.0 * 5.2e-3 / (1260.0 * 25.4e-3)
 
 
@@ -58,15 +61,22 @@ def gurney_sandwich(d):
 
 
 def front_history(tephra, out):
+    """Per output: (t, x of the reaction front (F >= 0.5) or None, x of the
+    lead shock (p > P_SHOCK) or None, the largest axis pressure)."""
     y = 0.5 * DX
-    rows = collections.defaultdict(list)
-    for r in extract(tephra, out, "F", 1, f"-0.00499,{y},{y},0.04999,{y},{y}"):
-        rows[float(r["time"])].append((float(r["x"]), float(r["F"])))
-    front = []
-    for t in sorted(rows):
-        xs = [x for x, f in rows[t] if f >= 0.5]
-        front.append((t, max(xs) if xs else None))
-    return front
+    line = f"-0.00499,{y},{y},0.04999,{y},{y}"
+    f_rows, p_rows = collections.defaultdict(list), collections.defaultdict(list)
+    for r in extract(tephra, out, "F", 1, line):
+        f_rows[float(r["time"])].append((float(r["x"]), float(r["F"])))
+    for r in extract(tephra, out, "press_CC", 0, line):
+        p_rows[float(r["time"])].append((float(r["x"]), float(r["press_CC"])))
+    hist = []
+    for t in sorted(f_rows):
+        xf = [x for x, f in f_rows[t] if f >= 0.5]
+        xp = [x for x, p in p_rows.get(t, []) if p > P_SHOCK]
+        pmax = max([p for _, p in p_rows.get(t, [])] + [0.0])
+        hist.append((t, max(xf) if xf else None, max(xp) if xp else None, pmax))
+    return hist
 
 
 def wall_history(tephra, out):
@@ -86,9 +96,20 @@ def wall_history(tephra, out):
 
 
 def analyse(tephra, out, png_dir):
-    front = front_history(tephra, out)
-    for t, x in front:
-        print(f"t = {t * 1e6:6.2f} us  front = {x * 1e3 if x is not None else float('nan'):6.2f} mm")
+    hist = front_history(tephra, out)
+    for t, xf, xs, pm in hist:
+        nan = float("nan")
+        print(f"t = {t * 1e6:6.2f} us  reaction front (F >= 0.5) = {xf * 1e3 if xf is not None else nan:6.2f} mm"
+              f"  shock (p > {P_SHOCK:.0e} Pa) = {xs * 1e3 if xs is not None else nan:6.2f} mm"
+              f"  max axis p = {pm:.3g} Pa")
+    front = [(t, xf) for t, xf, _, _ in hist]
+    shock = [(t, xs) for t, _, xs, _ in hist]
+    for name, series in (("shock", shock), ("reaction front", front)):
+        prev = None
+        for t, x in series:
+            if x is not None and prev is not None and t > prev[0]:
+                print(f"   {name} speed {t * 1e6:6.2f} us: {(x - prev[1]) / (t - prev[0]):7.0f} m/s")
+            prev = (t, x) if x is not None else prev
     pts = []
     for t, x in front:
         if x is not None and x > X_FIT_END:
@@ -104,7 +125,8 @@ def analyse(tephra, out, png_dir):
         print(f"wall v_y at x = {s * 1e3:.0f} mm (outer layer):")
         for t, v in h:
             print(f"   t = {t * 1e6:6.2f} us  v_y = {v:8.2f} m/s")
-    rows = [("front_x_m", t, x) for t, x in front]
+    rows = [("front_x_m", t, x) for t, x in front] + [("shock_x_m", t, x) for t, x in shock]
+    rows += [("max_axis_pressure_Pa", t, pm) for t, _, _, pm in hist]
     for s, h in wall.items():
         rows += [(f"wall_vy_m_per_s_at_x_{s * 1e3:.0f}mm", t, v) for t, v in h]
     os.makedirs(png_dir, exist_ok=True)
@@ -131,9 +153,11 @@ def analyse(tephra, out, png_dir):
                     [100.0 * k for k in range(int(vt / 100) + 1)][::max(1, int(vt / 100) // 10)],
                     "T (US)", "WALL RADIAL VELOCITY V_Y (M/S), OUTER COPPER LAYER", legend)
     plot_series(os.path.join(png_dir, "qm100curs-front.png"),
-                [([(t * 1e6, None if x is None else x * 1e3) for t, x in until_the_end(front)], colours[0])],
+                [([(t * 1e6, None if x is None else x * 1e3) for t, x in until_the_end(front)], colours[0]),
+                 ([(t * 1e6, None if x is None else x * 1e3) for t, x in until_the_end(shock)], colours[2])],
                 (0.0, tt), (0.0, 50.0), xt, [5.0 * k for k in range(11)], "T (US)",
-                "DETONATION FRONT X (MM), AXIS CELLS WITH F AT LEAST 0.5", [("QM100CURS", colours[0])])
+                "X (MM) ON THE AXIS ROW", [("REACTION FRONT F >= 0.5", colours[0]),
+                                          (f"LEAD SHOCK P > {P_SHOCK / 1e6:.0f} MPA", colours[2])])
     return d
 
 
