@@ -48,9 +48,13 @@
 // keeps Q_new >= 0: a flagged donor sends psi_D sum_out F_M <= psi_D M_L (its
 // mass outflow is at most its mass), an unflagged one at most M_L psi_L, and
 // inflows are >= 0. A donor that does not overdraw keeps its bits.
+// Session 17: the rule is now the local range of ice/AdvectionBounds.h
+// (item 2): R_Q/R_M of the donor within its neighbours' psi range, which
+// bounds the temperature of a trace (the BurnRate.ups 1.6e8 K) as well.
 #include <algorithm>
 
 #include "core/grid/Loop.h"
+#include "ice/AdvectionBounds.h"
 #include "ice/IceAdvection.h"
 #include "ice/IceComponent.h"
 #include "ice/RowLoop.h"
@@ -84,43 +88,17 @@ void update_from_fluxes(const Grid& g, const FaceScalars& F, Base&& base, const 
 
 }  // namespace
 
-// The positivity fallback of the header: donors with sum_out F_psi > M_L psi_L
-// (flagged in `flag`, a cell scratch with ghosts, exchanged so that both
-// patches of a shared face agree) send F_M psi_D through their outgoing faces.
+// The range rule of ice/AdvectionBounds.h item 2 (it contains the
+// positivity rule above): donors whose remaining content over remaining mass
+// leaves the range of psi over the cell and its face neighbours (flagged in
+// `flag`, a cell scratch with ghosts, exchanged so that both patches of a
+// shared face agree) send F_M psi_D through their outgoing faces.
 void IceComponent::keep_contents_nonnegative(std::size_t m, const CellScalars& psi_L, CellScalars& flag) {
   const Grid& g = setup_.grid;
-  const CellScalars& mass_L = mass_L_[m];
-  bool any = false;
-  for (std::size_t pi = 0; pi < g.patches.size(); ++pi) {
-    flag[pi].fill(0.0);
-    const IndexRange cells = g.patches[pi].cells();
-    for_each_cell_serial(cells, [&](int i, int j, int k) {
-      const IntVec3 c(i, j, k);
-      double out = 0;  // content leaving c: negative flux on its low faces, positive on its high faces
-      for (int d = 0; d < 3; ++d) {
-        const IntVec3 hi = c + IntVec3::Unit(d);
-        out += std::max(0.0, -flux2_.at(d, pi)(c)) + std::max(0.0, flux2_.at(d, pi)(hi));
-      }
-      if (out > mass_L[pi](c) * psi_L[pi](c)) {
-        flag[pi](c) = 1.0;
-        any = true;
-      }
-    });
-  }
+  const bool any = flag_out_of_range_donors(g, psi_L, mass_L_[m], flux_, flux2_, flag);
   if (!layout_.any(any)) return;
   halo_->exchange(flag);
-  for (std::size_t pi = 0; pi < g.patches.size(); ++pi)
-    for (int d = 0; d < 3; ++d) {
-      const IndexRange cells = g.patches[pi].cells();
-      const IndexRange faces{cells.lo, cells.hi + IntVec3::Unit(d)};
-      const GridArray<double>& mf = flux_.at(d, pi);
-      GridArray<double>& F = flux2_.at(d, pi);
-      for_each_cell_serial(faces, [&](int i, int j, int k) {
-        const IntVec3 f(i, j, k);
-        const IntVec3 donor = mf(f) > 0.0 ? IntVec3(f - IntVec3::Unit(d)) : f;
-        if (flag[pi](donor) != 0.0) F(f) = mf(f) * psi_L[pi](donor);
-      });
-    }
+  donor_value_fluxes(g, psi_L, flux_, flag, flux2_);
 }
 
 void IceComponent::advect_content(std::size_t m, const CellScalars& psi_L, CellScalars& out, double dt) {

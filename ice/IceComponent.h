@@ -160,7 +160,10 @@ class IceComponent final : public Component {
   // MPMICE volume fluxes (IceLagrangianFlux.cpp).
   bool has_lagrangian_flux(std::size_t m) const;
   void lagrangian_volume_flux(std::size_t m, FaceScalars& flux) const;
-  void scale_fluid_flux(std::size_t m, double dt, FaceScalars& flux);
+  // Returns whether it scaled (solids present, m a fluid); the face weights chi L are then in lag_weight_.
+  bool scale_fluid_flux(std::size_t m, double dt, FaceScalars& flux);
+  // The donor outflow bound of ice/AdvectionBounds.h on material m's mass fluxes flux_ (IceLagrangianFlux.cpp).
+  void bound_outflow(std::size_t m, double dt, const FaceScalars* weight);
   // theta_s,face of solid s on face R of axis d and the solid's phi = u dt/dx there.
   struct SolidFaceFraction {
     double theta = 0, phi = 0;
@@ -233,6 +236,8 @@ class IceComponent final : public Component {
   std::vector<FaceScalars> lag_mass_flux_;  // MPMICE: per material (empty for fluids), lagrangian_mass_flux()
   FaceScalars lag_chi_;                     // MPMICE: scratch of scale_fluid_flux
   CellScalars lag_limit_;
+  FaceScalars lag_weight_;   // chi L of the last scale_fluid_flux, per face
+  CellScalars outflow_limit_;  // scratch of bound_outflow
   FaceScalars lag_theta_face_;     // MPMICE implicit: theta_face held over the outer iterations
   bool lag_theta_frozen_ = false;  // set by freeze_solid_face_fractions, cleared at the next step
   std::vector<FaceScalars> imp_share_;  // MPMICE implicit: per fluid, F_m/phi_m on each face

@@ -27,6 +27,7 @@
 #include <cmath>
 
 #include "core/grid/Loop.h"
+#include "ice/AdvectionBounds.h"
 #include "ice/IceComponent.h"
 
 namespace tephra {
@@ -143,16 +144,17 @@ double IceComponent::solids_face_fraction(int d, std::size_t pi, const IntVec3& 
 // from active in a smooth flow (sum_out phi ~ the CFL number) and acts in
 // cells where a trace of fluid sits inside a solid (theta_f ~ tiny_rho), whose
 // chi = (1 - theta_s,face)/theta_f is round-off over round-off.
-void IceComponent::scale_fluid_flux(std::size_t m, double dt, FaceScalars& flux) {
-  if (setup_.materials[m].lagrangian) return;
+bool IceComponent::scale_fluid_flux(std::size_t m, double dt, FaceScalars& flux) {
+  if (setup_.materials[m].lagrangian) return false;
   const Grid& g = setup_.grid;
   const std::size_t nm = mats_.size();
   std::vector<std::size_t> solids;
   for (std::size_t s = 0; s < nm; ++s)
     if (has_lagrangian_flux(s)) solids.push_back(s);
-  if (solids.empty()) return;
+  if (solids.empty()) return false;
   if (lag_chi_.x.size() == 0) {
     lag_chi_ = FaceScalars(g, 0);
+    lag_weight_ = FaceScalars(g, 0);
     lag_limit_ = CellScalars(g, 2);
   }
   const FaceScalars& u = mats_[m].vel_FCME;
@@ -191,14 +193,32 @@ void IceComponent::scale_fluid_flux(std::size_t m, double dt, FaceScalars& flux)
     for (int d = 0; d < 3; ++d) {
       const IntVec3 e = IntVec3::Unit(d);
       GridArray<double>& F = flux.at(d, pi);
+      GridArray<double>& w = lag_weight_.at(d, pi);
       const GridArray<double>& chi = lag_chi_.at(d, pi);
       const GridArray<double>& um = u.at(d, pi);
       for_each_cell(faces_of(g.patches[pi], d), [&](int i, int j, int k) {
         const IntVec3 R(i, j, k);
         const IntVec3 D = um(R) > 0 ? IntVec3(R - e) : R;
-        F(R) *= chi(R) * lag_limit_[pi](D);
+        w(R) = chi(R) * lag_limit_[pi](D);
+        F(R) *= w(R);
       });
     }
+  return true;
+}
+
+// ice/AdvectionBounds.h item 1 on the mass fluxes flux_ of fluid m (after
+// scale_fluid_flux: weight = its chi L, or null in pure ICE): a donor keeps
+// at least half of what its first-order outflow leaves. In MPMICE this is
+// the cell of a trace fluid inside a solid, whose weighted outflow
+// sum phi chi L reaches 1/2 of its content (the limit above) and whose
+// second-order slab value reaches twice its content.
+void IceComponent::bound_outflow(std::size_t m, double dt, const FaceScalars* weight) {
+  const Grid& g = setup_.grid;
+  if (outflow_limit_.size() == 0) outflow_limit_ = CellScalars(g, 2);
+  const bool any = outflow_limits(g, mass_L_[m], mats_[m].vel_FCME, weight, dt, flux_, outflow_limit_);
+  if (!layout_.any(any)) return;
+  halo_->exchange(outflow_limit_);
+  limit_outflow(g, mass_L_[m], mats_[m].vel_FCME, weight, dt, outflow_limit_, flux_);
 }
 
 }  // namespace tephra

@@ -11,6 +11,7 @@
 #include "ice/Diffusion.h"
 #include "ice/Equilibration.h"
 #include "ice/Exchange.h"
+#include "ice/AdvectionBounds.h"
 #include "ice/IceAdvection.h"
 #include "ice/IceBoundary.h"
 #include "ice/IceComponent.h"
@@ -659,7 +660,9 @@ void IceComponent::advect_and_advance(double dt, int step) {
     check_outflux(g, f.vel_FCME, dt, step);
     // Mass first; its face fluxes carry the specific quantities.
     density_fluxes(g, setup_.advection, mass_L_[m], f.vel_FCME, dt, flux_);
-    scale_fluid_flux(m, dt, flux_);  // MPMICE: the face area the solids leave (IceLagrangianFlux.cpp)
+    const bool weighted = scale_fluid_flux(m, dt, flux_);  // MPMICE: the face area the solids leave (IceLagrangianFlux.cpp)
+    if (setup_.advection != AdvectionOrder::First)  // no donor sends more than (q + first-order outflow)/2
+      bound_outflow(m, dt, weighted ? &lag_weight_ : nullptr);  // ice/AdvectionBounds.h
     specific_fluxes(g, setup_.advection, vel_L_[m], f.vel_FCME, flux_, dt, flux_v_);
     // The net inflows (flux_divergence) of mass and momentum, summed in the row loop.
     for (std::size_t pi = 0; pi < g.patches.size(); ++pi) {

@@ -11,7 +11,9 @@
 //    L1). Observed order = log2(E_N / E_2N).
 //    The specific quantity psi carried by the mass fluxes (compatible
 //    fluxes): (rho psi)_t + (u rho psi)_x = 0 with rho and psi both smooth;
-//    psi = (rho psi)/rho returns to psi0 with the same orders.
+//    psi = (rho psi)/rho returns to psi0 with the same orders. At second
+//    order the donor outflow bounds of ice/AdvectionBounds.h are applied as
+//    in the ICE step (inactive on this smooth profile: same orders).
 // 2. A square block of a second material in a periodic box moving at a
 //    uniform velocity through the full ICE step (both orders): the total mass
 //    of each material is a sum of telescoping face fluxes, so it is
@@ -25,6 +27,7 @@
 #include "core/deck/DeckLoader.h"
 #include "core/grid/HaloExchange.h"
 #include "core/grid/Loop.h"
+#include "ice/AdvectionBounds.h"
 #include "ice/IceAdvection.h"
 #include "ice/IceComponent.h"
 
@@ -52,7 +55,7 @@ LineErrors advect_one_period(int n, AdvectionOrder order) {
   set_thread_count(1);  // 1-D lines: loop-helper threads cost more than they save
   const Grid g = periodic_line(n, 2);
   LocalHaloExchange halo(g);
-  CellScalars q(g, 2), mass(g, 2), psi(g, 2), dq(g, 2), dm(g, 2), dpsi(g, 2);
+  CellScalars q(g, 2), mass(g, 2), psi(g, 2), dq(g, 2), dm(g, 2), dpsi(g, 2), limit(g, 2);
   FaceScalars u(g, 0), flux(g, 0), mflux(g, 0), pflux(g, 0);
   u.x.fill(1.0);
   u.y.fill(0.0);
@@ -74,10 +77,23 @@ LineErrors advect_one_period(int n, AdvectionOrder order) {
     halo.exchange(mass);
     halo.exchange(psi);
     density_fluxes(g, order, q, u, dt, flux);
-    flux_divergence(g, flux, dq);
     density_fluxes(g, order, mass, u, dt, mflux);
+    if (order != AdvectionOrder::First) {  // the donor outflow bound (AdvectionBounds.h) as in the ICE step
+      outflow_limits(g, q, u, nullptr, dt, flux, limit);
+      halo.exchange(limit);
+      limit_outflow(g, q, u, nullptr, dt, limit, flux);
+      outflow_limits(g, mass, u, nullptr, dt, mflux, limit);
+      halo.exchange(limit);
+      limit_outflow(g, mass, u, nullptr, dt, limit, mflux);
+    }
+    flux_divergence(g, flux, dq);
     flux_divergence(g, mflux, dm);
     specific_fluxes(g, order, psi, u, mflux, dt, pflux);
+    if (order != AdvectionOrder::First) {
+      flag_out_of_range_donors(g, psi, mass, mflux, pflux, limit);
+      halo.exchange(limit);
+      donor_value_fluxes(g, psi, mflux, limit, pflux);
+    }
     flux_divergence(g, pflux, dpsi);
     for (std::size_t pi = 0; pi < g.patches.size(); ++pi)
       for_each_cell_serial(g.patches[pi].cells(), [&](int i, int j, int k) {
