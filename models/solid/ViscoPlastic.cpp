@@ -311,7 +311,11 @@ ConstitutiveModelP ViscoPlastic::create(const ModelParameters& params) {
   rd("coeff_yieldstress_evol", p.A3, false);
   rd("coeff_dragstress_evol", p.A5, false);
   rd("coeff_stress_saturation", p.s0, true);
-  rd("initial_drag", p.K0, true);
+  // Vaango reads the initial drag from the misspelt <intial_drag> (its schema has only that
+  // spelling, so a deck can set K_0 only with it); <initial_drag> is accepted too (never both).
+  if (f->has("intial_drag") && f->has("initial_drag"))
+    f->fail("initial_drag", "give the initial drag once: <intial_drag> (Vaango's spelling) or <initial_drag>");
+  rd(f->has("intial_drag") ? "intial_drag" : "initial_drag", p.K0, true);
   rd("initial_yield", p.R0, false);
   // Read, not used (static recovery, Vaango's theta integrator): see the header.
   f->get_double("exponent_backstress_evol", 1.0);

@@ -89,7 +89,8 @@
 // normalizing_inelastic_strainrate A [1/s]; activation_energy Q [J/mol];
 // universal_gas_constant R_g [J/(mol K)]; temperature T [K]; exponent_inelastic_strainrate N;
 // coeff_yieldstress_saturation r0 [Pa]; exponent_yieldstress n_R; coeff_yieldstress_evol A3 [Pa];
-// coeff_dragstress_evol A5 [Pa]; coeff_stress_saturation s0 [Pa]; initial_drag K_0 [Pa] (> 0);
+// coeff_dragstress_evol A5 [Pa]; coeff_stress_saturation s0 [Pa]; intial_drag (Vaango's spelling, the only one its schema has) or
+// initial_drag K_0 [Pa] (> 0);
 // initial_yield R_0 [Pa]. exponent_backstress_evol, normalizing_backstress (static
 // recovery, unused by Vaango), exponent_dragstress: read, not used. Defaults are Vaango's.
 #include <Eigen/Core>

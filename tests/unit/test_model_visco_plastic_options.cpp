@@ -179,6 +179,19 @@ TEST(ModelViscoPlasticOptions, InitialTemperatureAndPolarDecompositionFlagHaveNo
   EXPECT_GT(ref.back().history[3][0], 0.0);  // the path flows
 }
 
+TEST(ModelViscoPlasticOptions, InitialDragFromVaangosMisspeltTag) {
+  // Vaango's schema and ViscoPlastic read the initial drag K_0 from <intial_drag>: the drag
+  // history starts at that value; <initial_drag> is the same; both at once is an error.
+  for (const char* tag : {"intial_drag", "initial_drag"}) {
+    const ConstitutiveModelP m = create_constitutive_model("visco_plastic", params({}, {{tag, 0.07e6}}));
+    EXPECT_EQ(m->history()[2].name, "drag");
+    EXPECT_EQ(m->history()[2].initial[0], 0.07e6) << tag;
+  }
+  EXPECT_THROW(create_constitutive_model("visco_plastic", params({}, {{"intial_drag", 0.07e6}, {"initial_drag", 0.07e6}})),
+               std::invalid_argument);
+  EXPECT_THROW(create_constitutive_model("visco_plastic", params({}, {{"intial_drag", 0.0}})), std::invalid_argument);
+}
+
 TEST(ModelViscoPlasticOptions, BadValuesAreDeckErrors) {
   EXPECT_THROW(create_constitutive_model("visco_plastic", params({{"tolerance", -1e-10}})), std::invalid_argument);
   EXPECT_THROW(create_constitutive_model("visco_plastic", params({{"initial_material_temperature", 0.0}})),
