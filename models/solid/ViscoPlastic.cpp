@@ -104,6 +104,18 @@ bool suvic_integrate(SuvicState& y, const Eigen::Matrix3d& d, double dt, double 
   return true;
 }
 
+bool suvic_truncate_rate(Eigen::Matrix3d& d, double tol) {
+  bool all_below = true;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) {
+      if (std::abs(d(i, j)) < tol)
+        d(i, j) = 0.0;
+      else
+        all_below = false;
+    }
+  return all_below;
+}
+
 double suvic_failure_measure(const SuvicFailure& f, const Eigen::Matrix3d& stress, const Eigen::Matrix3d& F) {
   const Eigen::Matrix3d I = Eigen::Matrix3d::Identity();
   if (f.by_stress) return Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(stress, Eigen::EigenvaluesOnly).eigenvalues()(2);
@@ -151,6 +163,18 @@ long ViscoPlastic::update(const SolidUpdateInput& in, const SolidUpdateOutput& o
     // Unrotated strain increment (midpoint rule on U, as hypo_elastic).
     const Eigen::Matrix3d Gm = (b.U - a.U) * (0.5 * (a.U + b.U)).inverse();
     Eigen::Matrix3d de = 0.5 * (Gm + Gm.transpose());
+    if (in.dt > 0.0 && m_.tolerance > 0.0) {  // Vaango's <tolerance> on the laboratory D (header)
+      Eigen::Matrix3d d_lab = b.R * (de / in.dt) * b.R.transpose();
+      const Eigen::Matrix3d before = d_lab;
+      if (suvic_truncate_rate(d_lab, m_.tolerance)) {  // the point "just sits there"
+        if (m_.alpha != 0.0 && std::isfinite(in.temperature[i])) out.history[kLastT][i] = in.temperature[i];
+        const Eigen::Matrix3d tau = a.R.transpose() * in.stress_old[i] * a.R;  // unrotated stress kept
+        out.stress[i] = b.R * tau * b.R.transpose();
+        out.energy_density[i] = stored(tau);
+        return out.stress[i].allFinite();
+      }
+      if (d_lab != before) de = b.R.transpose() * d_lab * b.R * in.dt;
+    }
     if (m_.alpha != 0.0) {  // thermal strain alpha (T_{n+1} - T_last) I (header)
       const double T = in.temperature[i];
       if (!std::isfinite(T)) return false;
@@ -224,6 +248,12 @@ ConstitutiveModelP ViscoPlastic::create(const ModelParameters& params) {
   if (!std::isfinite(m.alpha)) params.fail("coeff_thermal_expansion", "coeff_thermal_expansion must be finite");
   if (!params.mpm_flag("DoThermalExpansion", true)) m.alpha = 0.0;  // Vaango MPMFlags
   m.use_modified_eos = params.get_bool("useModifiedEOS", false);
+  m.tolerance = params.get_double("tolerance", m.tolerance);
+  if (!(m.tolerance >= 0.0) || !std::isfinite(m.tolerance)) params.fail("tolerance", "tolerance must be >= 0");
+  m.initial_temperature = params.get_double("initial_material_temperature", m.initial_temperature);
+  if (!(m.initial_temperature > 0.0) || !std::isfinite(m.initial_temperature))
+    params.fail("initial_material_temperature", "initial_material_temperature must be > 0 K");
+  params.get_bool("use_polar_decomposition_RMB", true);  // no effect: the polar decomposition is unique (header)
   m.specific_heat = params.enclosing_double("specific_heat", 0.0);
   if (!(m.specific_heat > 0.0))
     params.fail("shear_modulus", "visco_plastic plastic heating needs the material's <specific_heat> > 0");
@@ -281,7 +311,11 @@ ConstitutiveModelP ViscoPlastic::create(const ModelParameters& params) {
   rd("coeff_yieldstress_evol", p.A3, false);
   rd("coeff_dragstress_evol", p.A5, false);
   rd("coeff_stress_saturation", p.s0, true);
-  rd("initial_drag", p.K0, true);
+  // Vaango reads the initial drag from the misspelt <intial_drag> (its schema has only that
+  // spelling, so a deck can set K_0 only with it); <initial_drag> is accepted too (never both).
+  if (f->has("intial_drag") && f->has("initial_drag"))
+    f->fail("initial_drag", "give the initial drag once: <intial_drag> (Vaango's spelling) or <initial_drag>");
+  rd(f->has("intial_drag") ? "intial_drag" : "initial_drag", p.K0, true);
   rd("initial_yield", p.R0, false);
   // Read, not used (static recovery, Vaango's theta integrator): see the header.
   f->get_double("exponent_backstress_evol", 1.0);

@@ -60,6 +60,26 @@
 // following the grid (the stress stays what it was set to). <remove_particles> adds Vaango's melt
 // check (T_{n+1} + dT > the material's <melt_temp>): as in Vaango it only discards the step's
 // changes of beta, R, K and does not flag the point.
+// Model options of Vaango ViscoPlastic's constructor and explicit computeStressTensor:
+//  - <tolerance> tol [1/s] (default 1e-10): components of the rate of deformation D with
+//    |D_ij| < tol are taken as 0 (Vaango truncates the laboratory-frame D = sym(L) component by
+//    component before rotating it to the material frame). Tephra's D is the step's unrotated rate
+//    de/dt (midpoint rule on U, above) rotated to the laboratory frame with R_{n+1}, truncated
+//    there and rotated back. When every component is below tol the point "just sits there"
+//    (Vaango's words): no update, the internal variables, plastic strain and failure state keep
+//    their values, no heating, no plastic work, and the step's thermal strain is not applied
+//    (Vaango's pTempPrev moves on regardless; here lastTemperature moves on). Vaango then copies
+//    the laboratory stress; Tephra keeps the unrotated stress, sigma_{n+1} = R_{n+1} R_n^T sigma_n
+//    R_n R_{n+1}^T (objective; the same for a point that does not rotate). Vaango also skips the
+//    update at D = 0 exactly with tol = 0; Tephra with <tolerance>0 updates every step (stress
+//    relaxation and thermal stress at fixed F, as the SUVIC-I rate equations say).
+//  - <initial_material_temperature> [K] (default 269.15): Vaango stores it as the plasticity
+//    state's initial temperature, which SUVIC-I never reads (its shear modulus and melting
+//    temperature are the constants, its temperature the flow model's <temperature>): read,
+//    checked (> 0, finite), no effect.
+//  - <use_polar_decomposition_RMB> (default true): read by Vaango and never consulted (its
+//    explicit update always calls the RMB polar decomposition). The polar decomposition F = R U is
+//    unique, so the choice of algorithm cannot change the result: read (a boolean), no effect.
 // MPMICE hooks (Vaango ViscoPlastic::computePressEOSCM / computeRhoMicroCM): gauge pressure
 // p = K/2 (rho/rho0 - rho0/rho), dp/drho = K/2 (1/rho0 + rho0/rho^2), c^2 = K/rho (Vaango's);
 // rho(p) = rho0 (x + sqrt(x^2 + 1)), x = p/K; <useModifiedEOS> the shared expansion branch
@@ -69,7 +89,8 @@
 // normalizing_inelastic_strainrate A [1/s]; activation_energy Q [J/mol];
 // universal_gas_constant R_g [J/(mol K)]; temperature T [K]; exponent_inelastic_strainrate N;
 // coeff_yieldstress_saturation r0 [Pa]; exponent_yieldstress n_R; coeff_yieldstress_evol A3 [Pa];
-// coeff_dragstress_evol A5 [Pa]; coeff_stress_saturation s0 [Pa]; initial_drag K_0 [Pa] (> 0);
+// coeff_dragstress_evol A5 [Pa]; coeff_stress_saturation s0 [Pa]; intial_drag (Vaango's spelling, the only one its schema has) or
+// initial_drag K_0 [Pa] (> 0);
 // initial_yield R_0 [Pa]. exponent_backstress_evol, normalizing_backstress (static
 // recovery, unused by Vaango), exponent_dragstress: read, not used. Defaults are Vaango's.
 #include <Eigen/Core>
@@ -122,8 +143,14 @@ struct SuvicModel {
   double specific_heat = 0.0;  // the material's <specific_heat> [J/(kg K)]
   double taylor_quinney = 0.9;  // Vaango's fixed coefficient
   bool use_modified_eos = false;
+  double tolerance = 1e-10;               // <tolerance> [1/s] (header: the D truncation)
+  double initial_temperature = 269.15;    // <initial_material_temperature> [K]: no effect (header)
   SuvicFailure failure;
 };
+
+// Vaango's <tolerance> (header): zeroes the components of the laboratory rate of deformation d
+// with |d_ij| < tol; returns true when every component is below tol (the point is not updated).
+bool suvic_truncate_rate(Eigen::Matrix3d& d, double tol);
 
 // The failure measure of a point (header comment): largest principal stress, mean stress or
 // largest principal Almansi strain of F.

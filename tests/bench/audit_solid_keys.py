@@ -71,6 +71,8 @@ OPTIONS = [
     "check_failure", "failure_variable_mean", "failure_variable_std", "failure_variable_distrib",
     "failure_by_stress", "failure_by_pressure", "zero_stress_upon_failure", "allow_no_tension",
     "remove_particles",
+    # visco_plastic model options read and checked with no effect in Vaango's SUVIC-I (session 17)
+    "initial_material_temperature", "use_polar_decomposition_RMB",
 ]
 
 

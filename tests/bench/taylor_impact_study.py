@@ -6,7 +6,7 @@ Usage:
   tests/bench/taylor_impact_study.py BUILD_DIR [--work DIR] [--h MM[,MM...]]
                                      [--end T] [--no-run] [--threads N] [--wall rigid|symmetry]
 
-For each grid spacing h (mm; default 0.75,0.5,0.3333) it writes a variant of the
+For each grid spacing h (mm; default 1.0,0.75,0.5625, ratio 4/3) it writes a variant of the
 deck to WORK/h<h>/deck.ups, runs `BUILD_DIR/bin/tephra` on it (one thread unless
 --threads), times it, and reduces the output. The variants change only:
   * the grid: isotropic spacing h on the box x, z in [0, 9] mm, y in [-3, 36] mm,
@@ -22,7 +22,13 @@ deck to WORK/h<h>/deck.ups, runs `BUILD_DIR/bin/tephra` on it (one thread unless
 Everything else (materials, contact, multiplier 0.8, boundary conditions) is the
 deck's.
 
-Reduced figures, each from the last output frame:
+Reduced figures (session 17: the converging measures first):
+  * L_rest/L_seed: the final length at rest (the minimum of L(t) over the frames at t >= 60 us
+    when the rod stopped inside the run, else the vertex of the parabola through the last three
+    frames; see rest_length) over the seeded rod's length (same measure at t = 0);
+  * R_A/R_A,seed: the footprint radius of the first particle row (footprint_radius) at the
+    rest frame (the last frame when L_rest is extrapolated) over t = 0.
+Then, each from the last output frame:
   * final length L = max_p (y_p + a_y,p) where a_y,p = (l0/2) sum_j |F_yj| is the
     half extent along y of the particle's deformed cube of side l0 = h/3
     (the wall face is y = 0); also from particle centres alone;
@@ -167,15 +173,77 @@ def extents(table, first, h):
     return L_e, R_e, L_c, R_c, y_rim
 
 
-def shape(tephra, out, h):
+def frames(out):
+    """Output steps of the run's particle frames (out/frames/t<step>.h5), in order."""
+    return sorted(int(m.group(1)) for f in os.listdir(os.path.join(out, "frames"))
+                  if (m := re.match(r"t(\d+)\.h5$", f)))
+
+
+def frame_time(tephra, out, step):
+    head, rows = extract(tephra, out, "p.deformationMeasure", step)
+    return float(rows[0][head.index("time")])
+
+
+def footprint_radius(table, first, h):
+    """R_A = sqrt(4 A / pi) [m] of the deformed footprint of the first particle row (seeded at
+    y0 < h/3, the row on the wall): A = sum (h/3)^2 |cof(F)_yy| (cof(F)_yy = F_xx F_zz - F_xz F_zx,
+    the deformed area of the particle's y-face); a quarter rod, so A is a quarter disc. An
+    integral measure (the max-extent R of one rim particle is first order on its own; session 16)."""
+    l = h / 3.0
+    area = sum(l * l * abs(F[0] * F[8] - F[2] * F[6]) for i, (x, F) in table.items() if first[i][0][1] < l)
+    return math.sqrt(4.0 * area / math.pi)
+
+
+def rest_extrapolation(hist):
+    """(t_rest, L_rest) from the parabola through the last three (t, L): near the stop the rod's
+    top decelerates about uniformly, L(t) = L_rest + (a/2)(t_rest - t)^2, vertex (t_rest, L_rest).
+    When the last three frames are not still falling and decelerating, the smallest of them."""
+    (t1, l1), (t2, l2), (t3, l3) = [(r[0], r[1]) for r in hist[-3:]]
+    # Divided differences: L = l3 + b (t - t3) + c (t - t3)(t - t2).
+    d1, d2 = (l2 - l1) / (t2 - t1), (l3 - l2) / (t3 - t2)
+    c = (d2 - d1) / (t3 - t1)
+    b = d2 + c * (t3 - t2)  # L'(t3)
+    if c <= 0 or b >= 0:
+        return t3, min(l1, l2, l3)
+    tv = t3 - b / (2 * c)  # L'(tv) = 0
+    return tv, l3 + b * (tv - t3) + c * (tv - t3) ** 2
+
+
+def rest_length(tephra, out, first, h, since):
+    """Final length at rest: L(t) over the frames at t >= since; if its minimum lies before the
+    last frame the rod stopped inside the run (the top's elastic spring-back follows) and
+    L_rest = that minimum ("measured"); otherwise the rod is still shortening at the end and
+    L_rest is the parabola's vertex through the last three frames ("extrapolated").
+    Returns (L_rest, t_rest, how, [(t, L)], the output step of the rest frame (the last frame
+    when extrapolated))."""
+    hist, steps = [], []
+    for s in frames(out):
+        t = frame_time(tephra, out, s)
+        if t < since:
+            continue
+        hist.append((t, extents(particle_table(tephra, out, s), first, h)[0]))
+        steps.append(s)
+    k = min(range(len(hist)), key=lambda i: hist[i][1])
+    if k < len(hist) - 1:
+        return hist[k][1], hist[k][0], "measured", hist, steps[k]
+    tr, lr = rest_extrapolation(hist)
+    return lr, tr, "extrapolated", hist, steps[-1]
+
+
+def shape(tephra, out, h, since=60e-6):
     """Final length and foot radius (module doc) from the first and last frames; also the
     seeded rod's L and R (same measure at t = 0: the staircase seeding is O(h/3))."""
     first = particle_table(tephra, out, 0)
     last = particle_table(tephra, out, "last")
     L_e, R_e, L_c, R_c, y_rim = extents(last, first, h)
     L_0, R_0 = extents(first, first, h)[:2]
+    L_rest, t_rest, how, _, rest_step = rest_length(tephra, out, first, h, since)
+    # the footprint at the rest frame (measured) or the last frame (extrapolated: R_A is flat by then)
+    RA_0, RA = footprint_radius(first, first, h), footprint_radius(particle_table(tephra, out, rest_step), first, h)
     return {"L_centres": L_c, "L": L_e, "R_centres": R_c, "R": R_e, "y_rim": y_rim, "particles": len(last),
-            "L_seed": L_0, "R_seed": R_0, "L_rel": L_e / L_0, "R_rel": R_e / R_0}
+            "L_seed": L_0, "R_seed": R_0, "L_rel": L_e / L_0, "R_rel": R_e / R_0,
+            "L_rest": L_rest, "t_rest": t_rest, "rest_how": how, "L_rest_rel": L_rest / L_0,
+            "RA": RA, "RA_seed": RA_0, "RA_rel": RA / RA_0}
 
 
 def energy(out):
@@ -210,7 +278,7 @@ def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("build")
     ap.add_argument("--work", default="/tmp/taylor_study")
-    ap.add_argument("--h", default="0.75,0.5,0.3333333333333333")
+    ap.add_argument("--h", default="1.0,0.75,0.5625")
     ap.add_argument("--end", type=float, default=80e-6)
     ap.add_argument("--threads", type=int, default=1)
     ap.add_argument("--interval", type=float, default=2e-6)
@@ -265,6 +333,9 @@ def main():
         print(f"  L = {s['L'] * 1e3:.3f} mm (centres {s['L_centres'] * 1e3:.3f}), L/L0 = {s['L'] / L0:.4f}; "
               f"R = {s['R'] * 1e3:.3f} mm (centres {s['R_centres'] * 1e3:.3f}, rim at y = {s['y_rim'] * 1e3:.3f} mm), "
               f"R/R0 = {s['R'] / R0:.4f}")
+        print(f"  at rest ({s['rest_how']}, t_rest {s['t_rest'] * 1e6:.2f} us): L_rest = {s['L_rest'] * 1e3:.3f} mm, "
+              f"L_rest/L_seed = {s['L_rest_rel']:.4f}, L_rest/L0 = {s['L_rest'] / L0:.4f}; footprint radius "
+              f"R_A = {s['RA'] * 1e3:.3f} mm (seeded {s['RA_seed'] * 1e3:.3f} mm), R_A/R_A,seed = {s['RA_rel']:.4f}")
         print(f"  seeded rod: L {s['L_seed'] * 1e3:.3f} mm, R {s['R_seed'] * 1e3:.3f} mm; "
               f"L/L_seed = {s['L_rel']:.4f}, R/R_seed = {s['R_rel']:.4f}; "
               f"volume-equivalent radius {R0 * math.sqrt(ke0 / KE_NOMINAL) * 1e3:.3f} mm")
@@ -285,7 +356,8 @@ def main():
     if len(results) == 3:
         hh = [r["h"] for r in results]
         print("Richardson (ratio %.4f):" % (hh[0] / hh[1]))
-        for key, scale, unit in (("L", 1e3, "mm"), ("R", 1e3, "mm"), ("L_centres", 1e3, "mm"),
+        for key, scale, unit in (("L_rest_rel", 1, ""), ("RA_rel", 1, ""), ("L_rest", 1e3, "mm"), ("RA", 1e3, "mm"),
+                                 ("L", 1e3, "mm"), ("R", 1e3, "mm"), ("L_centres", 1e3, "mm"),
                                  ("R_centres", 1e3, "mm"), ("L_rel", 1, ""), ("R_rel", 1, ""), ("deficit", 100, "%"),
                                  ("deficit_first", 100, "%"), ("contact", 100, "%"), ("transfer", 100, "%"),
                                  ("mismatch", 100, "%")):

@@ -25,36 +25,13 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import taylor_impact_study as study  # noqa: E402
 
 
-def frames(out):
-    return sorted(int(m.group(1)) for f in os.listdir(os.path.join(out, "frames"))
-                  if (m := re.match(r"t(\d+)\.h5$", f)))
+frames = study.frames
+footprint_radius = study.footprint_radius
+rest_extrapolation = study.rest_extrapolation
 
 
 def time_of(tephra, out, step):
-    head, rows = study.extract(tephra, out, "p.deformationMeasure", step)
-    return float(rows[0][head.index("time")])
-
-
-def footprint_radius(table, first, h):
-    """R_A = sqrt(4 A / pi) [m] of the deformed footprint of the first particle row (seeded at
-    y0 < h/3, the row on the wall): A = sum (h/3)^2 |cof(F)_yy| (cof(F)_yy = F_xx F_zz - F_xz F_zx,
-    the deformed area of the particle's y-face); a quarter rod, so A is a quarter disc."""
-    l = h / 3.0
-    area = sum(l * l * abs(F[0] * F[8] - F[2] * F[6]) for i, (x, F) in table.items() if first[i][0][1] < l)
-    return math.sqrt(4.0 * area / math.pi)
-
-
-def rest_extrapolation(hist):
-    """(t_rest, L_rest) from the parabola through the last three (t, L) (module doc)."""
-    (t1, l1), (t2, l2), (t3, l3) = [(r[0], r[1]) for r in hist[-3:]]
-    # Divided differences: L = l3 + b (t - t3) + c (t - t3)(t - t2).
-    d1, d2 = (l2 - l1) / (t2 - t1), (l3 - l2) / (t3 - t2)
-    c = (d2 - d1) / (t3 - t1)
-    b = d2 + c * (t3 - t2)  # L'(t3)
-    if c <= 0 or b >= 0:
-        return t3, min(l1, l2, l3)
-    tv = t3 - b / (2 * c)  # L'(tv) = 0
-    return tv, l3 + b * (tv - t3) + c * (tv - t3) ** 2
+    return study.frame_time(tephra, out, step)
 
 
 def main():
