@@ -57,8 +57,9 @@ double MpmIceComponent::stable_timestep() const {
 //   14.   grid BCs, G2P, x_p and v_p (MPM)
 void MpmIceComponent::advance(double t, double dt, int step) { mpm_->advance(t, dt, step); }
 
-void MpmIceComponent::after_interpolate_to_grid(double, double dt, int step) {
+void MpmIceComponent::after_interpolate_to_grid(double t, double dt, int step) {
   PhaseTimers& T = phase_timers();
+  ice_->set_coupled_step_time(t);  // the models' time (Test's startTime, ADD_HEAT's window, LightTime)
   { PhaseTimers::Scope s(T, "MPMICE: nodes to cells");        solid_state_to_cells(); }
   { PhaseTimers::Scope s(T, "MPMICE: solid volume fluxes");   solid_mass_fluxes(dt); }
   ice_->coupled_pressure_phases(dt, step);
