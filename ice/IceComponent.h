@@ -95,6 +95,9 @@ class IceComponent final : public Component {
   // and their exchange, model sources (mass conversion, step 4), pressure
   // increment, face pressure.
   void coupled_pressure_phases(double dt, int step);
+  // The coupled step's start time t, which the source models see as
+  // IceModelInput::time (advance() sets it for ICE alone).
+  void set_coupled_step_time(double t) { time_ = t; }
   // Steps 8-12: Lagrangian values, exchange, specific volume, advection of
   // the fluids (not of the lagrangian materials), state check.
   void coupled_transport_phases(double dt, int step);

@@ -1,7 +1,8 @@
 #pragma once
 // The MPMICE burn models of <Models> (mpmice/SolidBurn.h): Simple_Burn,
-// Steady_Burn, Unsteady_Burn, DDT1. read_ice_setup takes them through these factories; the
-// MpmIceComponent attaches itself to them (SolidBurnModel::attach).
+// Steady_Burn, Unsteady_Burn, DDT1, DDT0, Test, SolidReactionModel.
+// read_ice_setup takes them through these factories; the MpmIceComponent
+// attaches itself to them (SolidBurnModel::attach).
 #include <cstddef>
 
 #include "ice/models/IceModel.h"
@@ -13,6 +14,9 @@ class ModelParams;
 struct IceSetup;
 
 IceModelFactories mpmice_burn_model_factories();
+
+// Test's converted fraction per step, min(rate dt, 1) (mpmice/TestMassModel.cpp).
+double test_model_fraction(double rate, double dt);
 
 // Deck check every burn model makes: <fromMaterial> (index r) must be an MPM
 // material, <toMaterial> (index p) an ICE one; `what` names the model.

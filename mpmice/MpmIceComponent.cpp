@@ -90,8 +90,9 @@ void MpmIceComponent::advance(double t, double dt, int step) {
   step_redos_ += redo.redos;
 }
 
-void MpmIceComponent::after_interpolate_to_grid(double, double dt, int step) {
+void MpmIceComponent::after_interpolate_to_grid(double t, double dt, int step) {
   PhaseTimers& T = phase_timers();
+  ice_->set_coupled_step_time(t);  // the models' time (Test's startTime, ADD_HEAT's window, LightTime)
   { PhaseTimers::Scope s(T, "MPMICE: nodes to cells");        solid_state_to_cells(); }
   { PhaseTimers::Scope s(T, "MPMICE: solid volume fluxes");   solid_mass_fluxes(dt); }
   ice_->coupled_pressure_phases(dt, step);

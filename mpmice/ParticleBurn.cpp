@@ -86,6 +86,19 @@ bool MpmIceComponent::particle_history_max(std::size_t s, const std::string& nam
   return true;
 }
 
+void MpmIceComponent::reactant_particles(std::size_t s, std::vector<BurnParticle>& out) const {
+  const Grid& g = ice_->grid();
+  const Particles& pa = mpm_->materials()[s].particles;
+  out.clear();
+  for (std::size_t p = 0; p < pa.size(); ++p) {
+    IntVec3 c;
+    for (int d = 0; d < 3; ++d) c[d] = int(std::floor((pa.x[p][d] - g.lower[d]) / g.dx[d]));
+    const int level_patch = g.patch_owning_cell(c);  // a level index (-1: outside the interior)
+    for (std::size_t pi = 0; pi < g.patches.size(); ++pi)
+      if (g.patches[pi].id == level_patch) out.push_back({pa.id[p], pi, c, pa.mass[p], pa.temperature[p]});
+  }
+}
+
 void MpmIceComponent::burn_particles(std::size_t s, const CellScalars& dm, BurnedCells& out) {
   const Grid& g = ice_->grid();
   MpmMaterial& mm = mpm_->materials()[s];

@@ -57,6 +57,9 @@ void check_reactant_product(const ModelParams& mp, const IceSetup& setup, std::s
 IceModelP make_steady_burn(const DeckNode& model, const IceSetup& setup);    // SteadyBurnModel.cpp
 IceModelP make_unsteady_burn(const DeckNode& model, const IceSetup& setup);  // UnsteadyBurnModel.cpp
 IceModelP make_ddt1(const DeckNode& model, const IceSetup& setup);           // Ddt1Model.cpp
+IceModelP make_ddt0(const DeckNode& model, const IceSetup& setup);           // Ddt0Model.cpp
+IceModelP make_test_model(const DeckNode& model, const IceSetup& setup);     // TestMassModel.cpp
+IceModelP make_solid_reaction_model(const DeckNode& model, const IceSetup& setup);  // SolidReactionModel.cpp
 
 IceModelFactories mpmice_burn_model_factories() {
   IceModelFactories f;
@@ -64,6 +67,10 @@ IceModelFactories mpmice_burn_model_factories() {
   f["Steady_Burn"] = make_steady_burn;
   f["Unsteady_Burn"] = make_unsteady_burn;
   f["DDT1"] = make_ddt1;
+  f["DDT0"] = make_ddt0;
+  f["Test"] = make_test_model;
+  f["SolidReactionModel"] = make_solid_reaction_model;
+  // MesoBurn (MesoBurnModel.cpp) is built but not registered: exit 3 (docs/mpmice.md).
   return f;
 }
 

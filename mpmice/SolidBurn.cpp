@@ -42,7 +42,7 @@ void SolidBurnModel::initialize(const Grid& grid, const std::vector<IceMaterialF
   burned_.energy = CellScalars(grid, 0);
   burned_.momentum = CellVectors(grid, 0);
   for (CellScalars* f : {&dm_, &on_surface_, &burning_}) f->fill(0.0);
-  sums_.reset(grid, 2);
+  sums_.reset(grid, 3);
 }
 
 void SolidBurnModel::compute_sources(const IceModelInput& in, IceModelSources& out) {
@@ -98,6 +98,7 @@ void SolidBurnModel::compute_sources(const IceModelInput& in, IceModelSources& o
       total_heat_ += heat;
       sums_.at(pi, 0) += dm;
       sums_.at(pi, 1) += heat;
+      sums_.at(pi, 2) += E;
     });
 }
 

@@ -13,11 +13,22 @@
 // lose exactly what the product gains (mass and momentum to round-off).
 #include <cstddef>
 #include <string>
+#include <vector>
 
 #include "ice/models/IceModel.h"
 #include "ice/models/PatchSums.h"
 
 namespace tephra {
+
+// One particle of a reactant as a burn model sees it at step 4 (start-of-step
+// mass and temperature; MesoBurn's per-particle induction clock).
+struct BurnParticle {
+  long long id = 0;         // p.particleID (stable)
+  std::size_t patch = 0;    // this process's patch index holding the particle's cell
+  IntVec3 cell = IntVec3::Zero();
+  double mass = 0;          // [kg]
+  double temperature = 0;   // [K]
+};
 
 // What the particles gave up in each interior cell during one step.
 struct BurnedCells {
@@ -43,6 +54,9 @@ class SolidBurnSupport {
   // particles of each interior cell, 0 where the cell has none. False (out
   // untouched) when the solid's model has no such scalar column.
   virtual bool particle_history_max(std::size_t s, const std::string& name, CellScalars& out) const = 0;
+  // Solid s's particles in this process's interior cells (the cell rule of
+  // particles_per_cell), in storage order.
+  virtual void reactant_particles(std::size_t s, std::vector<BurnParticle>& out) const = 0;
 };
 
 // The cell a burn law sees.
@@ -103,6 +117,9 @@ class SolidBurnModel : public IceModel {
   // (default: the model's enthalpy; DDT1 differs between its branches).
   virtual double heat_of_reaction(std::size_t /*pi*/, const IntVec3& /*c*/) const { return enthalpy_; }
   SolidBurnSupport& support() const { return *support_; }
+  // Per own patch: burned mass, heat released, and the c_v T energy the
+  // burned mass carried (columns 0, 1, 2; Test reports 0 and 2).
+  const PatchSums& burn_sums() const { return sums_; }
 
  private:
   std::string type_, prefix_;
@@ -112,7 +129,7 @@ class SolidBurnModel : public IceModel {
   CellScalars dm_, on_surface_, burning_, ppc_;
   BurnedCells burned_;
   double total_burned_ = 0, total_heat_ = 0;  // this process's, for mass_burned_last_step()
-  PatchSums sums_;                              // per own patch: burned mass, heat released
+  PatchSums sums_;                              // per own patch: burned mass, heat released, c_v T energy moved
   Vec3 total_momentum_ = Vec3::Zero();
 };
 

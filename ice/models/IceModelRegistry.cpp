@@ -23,7 +23,9 @@ const std::map<std::string, Factory>& factories() {
 }
 
 // Vaango's other <Model type> values (ups_spec/Models.xml): valid input that
-// Tephra does not run yet (exit 3). The EOS names in that list are not
+// Tephra does not run yet (exit 3). In MPMICE decks Simple_Burn,
+// Steady_Burn, Unsteady_Burn, DDT0, DDT1, Test and SolidReactionModel are
+// run by mpmice/'s factories, tried first (mpmice_burn_model_factories). The EOS names in that list are not
 // models at all (Vaango's schema lists them there by mistake).
 const std::vector<std::string>& vaango_types() {
   static const std::vector<std::string> v = {"AdiabaticTable", "Radiation", "Simple_Burn",
