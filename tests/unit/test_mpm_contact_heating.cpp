@@ -21,6 +21,7 @@
 #include <random>
 #include <sstream>
 
+#include "core/base/Errors.h"
 #include "core/deck/DeckLoader.h"
 #include "mpm/MpmComponent.h"
 #include "mpm/contact/ContactTypes.h"
@@ -136,6 +137,24 @@ TEST(MpmContactHeating, NodeWorkBecomesParticleHeatExactly) {
     // u * 300 (u = 1.1e-16): relative to the heat, ~300/1e-3 * u = 3.3e-11.
     EXPECT_NEAR(heat, total, 1e-10 * total) << interpolator;
   }
+}
+
+// The flag is read (no longer accepted and ignored); heating divides by c_v,
+// so a material with specific_heat 0 is a DeckError naming the element.
+TEST(MpmContactHeating, FlagNeedsAPositiveSpecificHeat) {
+  auto deck_with = [](const std::string& cv) {
+    return "<Uintah_specification><MPM><do_contact_friction_heating>true</do_contact_friction_heating></MPM>"
+           "<MaterialProperties><MPM><material><density>1000</density><constitutive_model type='comp_neo_hook'>"
+           "<bulk_modulus>1e7</bulk_modulus><shear_modulus>5e6</shear_modulus></constitutive_model>"
+           "<thermal_conductivity>0</thermal_conductivity><specific_heat>" + cv + "</specific_heat><geom_object>"
+           "<box><min>[0,0,0]</min><max>[0.1,0.1,0.1]</max></box><res>[2,2,2]</res><velocity>[0,0,0]</velocity>"
+           "<temperature>300</temperature></geom_object></material></MPM></MaterialProperties><Grid>"
+           "<Level><Box><lower>[0,0,0]</lower><upper>[0.2,0.2,0.2]</upper><resolution>[4,4,4]</resolution>"
+           "<extraCells>[0,0,0]</extraCells><patches>[1,1,1]</patches></Box></Level></Grid></Uintah_specification>";
+  };
+  EXPECT_THROW(make_mpm_component(*load_deck_from_string(deck_with("0"), "cv0.ups", ".")), DeckError);
+  auto c = make_mpm_component(*load_deck_from_string(deck_with("837"), "cv.ups", "."));
+  EXPECT_TRUE(c->setup().flags.contact_friction_heating);
 }
 
 }  // namespace
