@@ -20,6 +20,7 @@
 #include "mpm/Transfers.h"
 #include "mpm/UpdatedGridVelocity.h"
 #include "mpm/contact/ContactNormals.h"
+#include "mpm/contact/FrictionHeating.h"
 #include "mpm/loads/BodyForceStress.h"
 
 namespace tephra {
@@ -270,7 +271,7 @@ void MpmComponent::artificial_viscosity(MpmMaterial& m) const {
 // Contact on v_g (interpolated) or v*_g (integrated) of all materials (§1.7).
 // The normals and positions depend on the particles of step n only, so they
 // are computed once, at the interpolated stage, and reused.
-void MpmComponent::exchange_momentum(ContactStage stage, double t, double dt) {
+void MpmComponent::exchange_momentum(ContactStage stage, double t, double dt, bool record_work) {
   const ContactModel& model = *setup_.contact;
   if (!model.acts_on(stage) && !(stage == ContactStage::Interpolated)) return;
   PhaseTimers::Scope timer(phase_timers(), stage == ContactStage::Interpolated
@@ -285,6 +286,7 @@ void MpmComponent::exchange_momentum(ContactStage stage, double t, double dt) {
     c.stencils.clear();
     for (const MpmMaterial& m : mats) c.particles.push_back(&m.particles), c.stencils.push_back(&m.stencils);
     c.h = setup_.grid.dx;
+    c.canonical = periodic_.active() ? &periodic_.canonical : nullptr;
     c.t = t;
     c.dt = dt;
     c.gradient.resize(model.needs_normals() ? mats.size() : 0);
@@ -299,6 +301,11 @@ void MpmComponent::exchange_momentum(ContactStage stage, double t, double dt) {
     // Periodic aliases (mpm/PeriodicGrid.h): normals summed, positions folded as offsets.
     for (std::vector<Vec3>& n : c.gradient) fold_vectors(periodic_, n);
     for (std::size_t i = 0; i < c.position.size(); ++i) fold_positions(periodic_, mats[i].grid, c.position[i]);
+    // <collinear_bimaterial_contact_normals>: body-averaged normals (ContactNormals.h).
+    if (setup_.flags.collinear_contact_normals) collinear_normals(c.grid, c.gradient);
+    // <do_contact_friction_heating>: the work of this step's two contact stages (FrictionHeating.h).
+    c.friction_work.assign(setup_.flags.contact_friction_heating ? mats.size() : 0,
+                           std::vector<double>(mats.empty() ? 0 : mats[0].grid.count(), 0.0));
     p2g_velocity_.resize(mats.size());
     for (std::size_t i = 0; i < mats.size(); ++i) p2g_velocity_[i] = mats[i].grid.velocity;
     if (!model.acts_on(stage)) return;
@@ -306,7 +313,14 @@ void MpmComponent::exchange_momentum(ContactStage stage, double t, double dt) {
   c.velocity.clear();
   for (MpmMaterial& m : mats)
     c.velocity.push_back(stage == ContactStage::Interpolated ? &m.grid.velocity : &m.grid.velocity_star);
-  model.exchange(stage, c);
+  if (record_work) {
+    model.exchange(stage, c);
+  } else {
+    std::vector<std::vector<double>> work;
+    std::swap(work, c.friction_work);
+    model.exchange(stage, c);
+    std::swap(work, c.friction_work);
+  }
 }
 
 // Vaango's boundary reactions (SerialMPM::computeInternalForce): for each
@@ -500,7 +514,7 @@ void MpmComponent::advance(double t, double dt, int step) {
         if (velocity_surfaces) impose_surface_velocities(i, t + dt, musl_velocity_[i]);
         std::swap(m.grid.velocity_star, musl_velocity_[i]);  // l_p and contact read g.velocity_star
       }
-      if (contact) exchange_momentum(ContactStage::Integrated, t, dt);
+      if (contact) exchange_momentum(ContactStage::Integrated, t, dt, false);
       for (std::size_t i = 0; i < mats.size(); ++i) {  // v*_g back where USL is stable for the node
         keep_stable_usl_nodes(mats[i].grid, fill_limit[i], cell_volume,
                               musl_velocity_[i], mats[i].grid.velocity_star);
@@ -558,6 +572,9 @@ void MpmComponent::advance(double t, double dt, int step) {
       if (ledger) ledger_.transfer_loss -= particle_increment_energy(p, v_ledger);
       wrap_periodic_positions(setup_.grid, p);  // re-enter through the opposite periodic face
       update_temperatures(m, dt);  // T += dt (sum rate_g S + model heating)
+      if (contact && !contact_nodes_.friction_work.empty())  // T += sum S W_g/(c_v m_g) (FrictionHeating.h)
+        friction_heat_to_particles(m.stencils, m.grid, contact_nodes_.friction_work[std::size_t(&m - mats.data())],
+                                   m.specific_heat, p);
       if (setup_.flags.test_for_negative_temperatures) check_temperatures(m, step);  // T < 0: exit 4
       // The lowest particle with a non-finite velocity or more than one cell
       // beyond a (non-periodic) domain face (threads), then its message: within

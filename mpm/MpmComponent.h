@@ -139,7 +139,9 @@ class MpmComponent final : public Component {
   // Permutes every per-particle column of m (particles, step columns, the
   // velocity-surface flags) into the scatter order of m.stencils (mpm/ParticleReorder.h).
   void reorder_particles(MpmMaterial& m);
-  void exchange_momentum(ContactStage stage, double t, double dt);
+  // record_work: add the frictional work to contact_nodes_.friction_work
+  // (<do_contact_friction_heating>); false for the re-contact of the MUSL velocity.
+  void exchange_momentum(ContactStage stage, double t, double dt, bool record_work = true);
   void boundary_forces();
   void apply_loads(double t);
   void apply_rotating_frame();  // mpm/loads/BodyForcePhase.cpp

@@ -173,6 +173,11 @@ std::unique_ptr<MpmComponent> make_mpm_component(const Deck& deck) {
     }
   }
   if (setup.materials.empty()) mpm.fail("<MaterialProperties><MPM> has no <material>");
+  // Friction heating divides the frictional work by c_v m_g (mpm/contact/FrictionHeating.h).
+  if (setup.flags.contact_friction_heating)
+    for (const DeckNode& c : mpm.children)
+      if (c.name == "material" && !(c.get_double("specific_heat") > 0.0))
+        c.require_child("specific_heat").fail("<do_contact_friction_heating>true needs specific_heat > 0");
   check_driver_combinations(deck, setup);
   for (MpmMaterial& m : setup.materials)
     m.bcs = parse_grid_boundary_conditions(grid_node.child("BoundaryConditions"), m.index);

@@ -104,14 +104,10 @@ void check_body_force_stress(const Deck& deck, MpmSetup& setup) {
     flag.missing_feature("<initialize_stress_using_body_force> with a prescribed deformation");
 }
 
-void check_driver_combinations(const Deck& deck, MpmSetup& setup) {
-  const DeckNode& root = deck.root;
+void check_driver_combinations(const Deck&, MpmSetup&) {
   // Contact on periodic grids: normals and positions folded over the node
-  // aliases (mpm/PeriodicGrid.h); friction_LR fits a plane through the
-  // particles reaching each node, which differ between a ghost and its image.
-  if ((setup.grid.periodic.array() != 0).any() && setup.contact && setup.materials.size() > 1 &&
-      setup.contact->type() == "friction_LR")
-    root.require_child("Grid").missing_feature("periodic MPM with friction_LR contact");
+  // aliases (mpm/PeriodicGrid.h); friction_LR gathers the point cloud of a
+  // node over its aliases (mpm/contact/FrictionLRContact.cpp).
   // Heat conduction works with axisymmetric stencils (in-plane gradients,
   // per-radian volumes: mpm/thermal/HeatConduction.cpp) and periodic grids
   // (folded temperature and rate, mpm/PeriodicGrid.h).

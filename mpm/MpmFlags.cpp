@@ -17,7 +17,7 @@ namespace {
 const char* const kNoEffect[] = {
     "withColor", "computeScaleFactor", "computeNodalHeatFlux",
     "DoTransientImplicitHeatConduction", "DoThermalExpansion",
-    "do_contact_friction_heating", "interpolateParticleTempToGridEveryStep",
+    "interpolateParticleTempToGridEveryStep",
     "min_grid_level", "max_grid_level",
     "CanAddMPMMaterial",
 };
@@ -139,6 +139,11 @@ MpmFlags parse_mpm_flags(const DeckNode* mpm) {
       continue;
     }
     if (c.name == "axisymmetric") { flags.axisymmetric = c.as_bool(); continue; }
+    if (c.name == "do_contact_friction_heating") { flags.contact_friction_heating = c.as_bool(); continue; }
+    if (c.name == "collinear_bimaterial_contact_normals") {
+      flags.collinear_contact_normals = c.as_bool();
+      continue;
+    }
     if (c.name == "test_for_neg_temps_mpm" || c.name == "testForNegTemps_mpm") {
       flags.test_for_negative_temperatures = c.as_bool();
       continue;

@@ -66,6 +66,13 @@ struct MpmFlags {
   bool use_prescribed_deformation = false;
   // <axisymmetric>: x = r, y = z, one hoop cell (mpm/Axisymmetric.h); linear, gimp or cpdi.
   bool axisymmetric = false;
+  // <do_contact_friction_heating> (Vaango's default false): the frictional
+  // work of the Coulomb contacts heats the particles (mpm/contact/FrictionHeating.h).
+  bool contact_friction_heating = false;
+  // <collinear_bimaterial_contact_normals> (Vaango's default false): body
+  // averaged contact normals, g_a <- (g_a - sum_{b != a} m_b g_b / sum m_b)/2
+  // (mpm/contact/ContactNormals.h collinear_normals).
+  bool collinear_contact_normals = false;
   int deformation_gradient_terms = 1;
   // <test_for_neg_temps_mpm> (also spelled <testForNegTemps_mpm>; Vaango's
   // default true): a particle temperature below 0 K after G2P stops the run

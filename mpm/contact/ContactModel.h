@@ -41,6 +41,15 @@ struct ContactNodes {
   // friction_LR's logistic-regression separation test).
   std::vector<const Particles*> particles;
   std::vector<const Stencils*> stencils;
+  // <do_contact_friction_heating>: when not empty (one array of nodes() per
+  // material), the Coulomb models (friction, friction_bard, approach,
+  // friction_LR) add the frictional work of each slipping exchange here, in
+  // joules, split between the two bodies (mpm/contact/FrictionHeating.h).
+  std::vector<std::vector<double>> friction_work;
+  // Periodic grids: canonical[g] is the representative of node g's alias set
+  // (mpm/PeriodicGrid.h); null otherwise. Read by friction_LR, whose point
+  // clouds gather the particles of all aliases.
+  const std::vector<std::size_t>* canonical = nullptr;
   Vec3 h = Vec3::Ones();  // cell size
   double t = 0.0;         // time at the start of the step
   double dt = 0.0;

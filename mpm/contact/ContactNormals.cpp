@@ -16,6 +16,25 @@ void mass_gradient(const Particles& p, const Stencils& s, const NodeGrid& g, std
     for (Vec3& v : out) v[2] = 0.0;
 }
 
+void collinear_normals(const std::vector<const NodeGrid*>& grids, std::vector<std::vector<Vec3>>& gradient) {
+  const std::size_t materials = gradient.size();
+  if (materials < 2) return;
+  const std::size_t count = gradient[0].size();
+  std::vector<Vec3> averaged(materials);
+  for (std::size_t g = 0; g < count; ++g) {
+    for (std::size_t a = 0; a < materials; ++a) {
+      averaged[a] = Vec3::Zero();
+      if (!(grids[a]->mass[g] > 0.0)) continue;
+      Vec3 others = Vec3::Zero();
+      double mass = 0.0;
+      for (std::size_t b = 0; b < materials; ++b)
+        if (b != a) others += grids[b]->mass[g] * gradient[b][g], mass += grids[b]->mass[g];
+      averaged[a] = mass > 0.0 ? Vec3(0.5 * (gradient[a][g] - others / mass)) : Vec3(0.5 * gradient[a][g]);
+    }
+    for (std::size_t a = 0; a < materials; ++a) gradient[a][g] = averaged[a];
+  }
+}
+
 void mass_weighted_position(const Particles& p, const Stencils& s, const NodeGrid& g, std::vector<Vec3>& out) {
   out.assign(g.count(), Vec3::Zero());
   visit_stencils(s, [&](const auto& view) {

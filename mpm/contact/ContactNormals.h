@@ -15,6 +15,16 @@ namespace tephra {
 // node, pointing out of the body (from its particles towards empty space).
 void mass_gradient(const Particles& p, const Stencils& s, const NodeGrid& g, std::vector<Vec3>& out);
 
+// <MPM><collinear_bimaterial_contact_normals>true: the body-averaged normals
+// (VT §1.7.5 after eq. 1.117, "for multiple objects an average gradient";
+// Vaango's SerialMPM computeNormals with d_computeCollinearNormals): at each
+// node, every material alpha with mass takes
+//   g_alpha <- (g_alpha - sum_{b != alpha} m_b g_b / sum_{b != alpha} m_b) / 2,
+// 0 where m_alpha = 0. With two materials g_1 = -g_2 = (g_1 - g_2)/2: both
+// bodies see the same plane, the normal of VT eq. 1.129, (g_a - g_b)/|g_a - g_b|.
+// `grids[m]->mass` are the node masses; `gradient[m]` the mass gradients.
+void collinear_normals(const std::vector<const NodeGrid*>& grids, std::vector<std::vector<Vec3>>& gradient);
+
 // x_g = sum_p m_p x_p S_gp / m_g (Vaango's gPosition); 0 where m_g = 0.
 void mass_weighted_position(const Particles& p, const Stencils& s, const NodeGrid& g, std::vector<Vec3>& out);
 

@@ -40,4 +40,22 @@ Vec3 coulomb_exchange(const ContactPair& p, double mu, const Vec3& h, double dt)
   return p.ma * dva;
 }
 
+double friction_work(const ContactPair& p, const Vec3& dp) {
+  const Vec3 slip = (p.va + dp / p.ma) - (p.vb - dp / p.mb);  // v'_a - v'_b
+  const Vec3 slip_t = slip - slip.dot(p.n) * p.n;
+  const Vec3 impulse_t = dp - dp.dot(p.n) * p.n;
+  return std::max(0.0, -impulse_t.dot(slip_t));  // >= 0 but for round-off
+}
+
+void record_friction_work(ContactNodes& nodes, std::size_t node, int a, const std::vector<int>& lump,
+                          const ContactPair& p, const Vec3& dp) {
+  if (nodes.friction_work.empty()) return;
+  const double q = friction_work(p, dp);
+  if (q == 0.0) return;
+  const double total = p.ma + p.mb;
+  nodes.friction_work[a][node] += q * (p.mb / total);
+  for (int b : lump)
+    if (b != a) nodes.friction_work[b][node] += q * (p.ma / total) * (nodes.grid[b]->mass[node] / p.mb);
+}
+
 }  // namespace tephra

@@ -33,6 +33,29 @@ struct ContactPair {
 // same seen from a or from b, so the exchange stays equal and opposite.
 Vec3 coulomb_exchange(const ContactPair& p, double mu, const Vec3& h, double dt);
 
+// Frictional work [J] of one exchange (<do_contact_friction_heating>). With
+// Delta p given to a and -Delta p to b, J_t = Delta p - (Delta p . n) n the
+// tangential impulse on a and w_t the tangential part of the slip velocity
+// after the exchange, v'_a - v'_b,
+//   Q = -J_t . w_t >= 0,
+// the friction force J_t/dt times the slip distance |w_t| dt of the step
+// (the particles move with the corrected node velocities). Zero when the
+// pair sticks (w_t = 0) or mu = 0 (J_t = 0). For a slipping pair without the
+// strain limiter this is Vaango's rule (FrictionContact, ApproachContact):
+// each body gets m mu |dv_n| (|dv_t| - mu |dv_n|), dv its velocity relative
+// to v_cm; the two add up to Q, a's share m_b/(m_a + m_b), b's m_a/(m_a + m_b).
+// The relative kinetic energy the tangential impulse removes is
+// Q + |J_t|^2 / (2 m_eff), m_eff = m_a m_b/(m_a + m_b): the heat misses the
+// last term, which is O(dt^2) per step for a force-driven slip (O(dt) in all).
+double friction_work(const ContactPair& p, const Vec3& dp);
+
+// Adds Q of the exchange at `node` to nodes.friction_work: m_b/(m_a + m_b) of
+// it to material a, the rest to the materials of the lump in proportion to
+// their node mass (they take the same velocity change). Nothing when the
+// friction work is not recorded.
+void record_friction_work(ContactNodes& nodes, std::size_t node, int a, const std::vector<int>& lump,
+                          const ContactPair& p, const Vec3& dp);
+
 // The node loop of the pairwise models. At each node where at least two of
 // `materials` have mass and sum V_g (scaled for boundary nodes as Vaango's
 // NC_CCweight does) / V_cell > volume_constraint, each contacting material

@@ -57,6 +57,7 @@ void exchange_pairs(ContactNodes& nodes, const std::vector<int>& materials, doub
       p.traction = p.n.dot((stress / (p.ma + p.mb)) * p.n);
       if (!decide(p)) continue;
       const Vec3 dp = coulomb_exchange(p, mu, nodes.h, nodes.dt);
+      record_friction_work(nodes, g, a, here, p, dp);
       (*nodes.velocity[a])[g] += dp / p.ma;
       const Vec3 dvb = -dp / p.mb;
       for (int b : here)

@@ -28,7 +28,9 @@
 //     dv_n = dv . m > 0. Then
 //       Dv = -dv_n m - min(mu, dv_t/dv_n) dv_n t,   t = tangential direction,
 //       v_beta += Dv,  v_alpha -= Dv m_beta / m_alpha,
-//     equal and opposite momentum at every node. (Vaango also scales Dv by
+//     equal and opposite momentum at every node. With
+//     <do_contact_friction_heating> the pair's frictional work goes to
+//     nodes.friction_work as in the other Coulomb models (CoulombExchange.h). (Vaango also scales Dv by
 //     ff = max(1, (0.01 dx - sep)/.01*dx), which as written is
 //     100 dx (0.01 dx - sep) and exceeds 1 only for overlaps of about
 //     1/(100 dx) metres; Tephra uses ff = 1.)
@@ -54,6 +56,7 @@ using Mat4 = Eigen::Matrix<double, 4, 4>;
 struct CloudPoint {
   int material;
   std::size_t particle;
+  Vec3 offset;  // x_p - X_k, k the node (or periodic alias) the particle's stencil weights
 };
 
 Vec3 node_position(const NodeGrid& g, std::size_t node) {
@@ -100,9 +103,14 @@ Vec3 logistic_regression_normal(const std::vector<Vec3>& x, const std::vector<do
 void FrictionLRContact::exchange(ContactStage, ContactNodes& nodes) const {
   const std::size_t count = nodes.nodes();
   const NodeGrid& grid = *nodes.grid[0];
+  // Periodic grids: node g's alias set is represented by home(g); every alias
+  // holds the folded m, v, V (mpm/PeriodicGrid.h). The exchange runs on the
+  // representatives, with the cloud of all aliases, and is copied to the others.
+  auto home = [&](std::size_t g) { return nodes.canonical ? (*nodes.canonical)[g] : g; };
   // 1. alpha material per node (-1: fewer than two materials with mass).
   std::vector<int> alpha(count, -1);
   for (std::size_t g = 0; g < count; ++g) {
+    if (home(g) != g) continue;
     int n = 0, best = -1;
     double most = -1.0;
     for (int m : materials_) {
@@ -114,7 +122,10 @@ void FrictionLRContact::exchange(ContactStage, ContactNodes& nodes) const {
     }
     if (n >= 2) alpha[g] = best;
   }
-  // 2. Point clouds of the multi-material nodes.
+  // 2. Point clouds of the multi-material nodes: each particle whose stencil
+  //    weights node k, with its position relative to k, in the cloud of
+  //    home(k) (on a periodic grid a particle that weights two aliases of a
+  //    node enters twice, once per periodic image, as the folded sums count it).
   std::vector<int> slot(count, -1);
   std::vector<std::vector<CloudPoint>> cloud;
   for (std::size_t g = 0; g < count; ++g)
@@ -128,9 +139,10 @@ void FrictionLRContact::exchange(ContactStage, ContactNodes& nodes) const {
       seen.clear();
       for (std::size_t k = i * s.width; k < (i + 1) * s.width; ++k) {
         const std::size_t g = s.node[k];
-        if (slot[g] < 0 || !(s.w[k] > 1e-100) || std::find(seen.begin(), seen.end(), g) != seen.end()) continue;
+        const int c = slot[home(g)];
+        if (c < 0 || !(s.w[k] > 1e-100) || std::find(seen.begin(), seen.end(), g) != seen.end()) continue;
         seen.push_back(g);
-        cloud[slot[g]].push_back({m, i});
+        cloud[std::size_t(c)].push_back({m, i, p.x[i] - node_position(grid, g)});
       }
     }
   }
@@ -144,11 +156,10 @@ void FrictionLRContact::exchange(ContactStage, ContactNodes& nodes) const {
     if (pts.size() < 2) continue;
     const int a = alpha[g];
     // 3. The separating plane's normal, alpha -> beta.
-    const Vec3 xg = node_position(grid, g);
     x.clear();
     label.clear();
     for (const CloudPoint& c : pts) {
-      x.push_back(nodes.particles[c.material]->x[c.particle] - xg);
+      x.push_back(c.offset);
       label.push_back(c.material == a ? -1.0 : 1.0);
     }
     const Vec3 n = logistic_regression_normal(x, label, lambda_n);
@@ -157,7 +168,7 @@ void FrictionLRContact::exchange(ContactStage, ContactNodes& nodes) const {
     for (const CloudPoint& c : pts) {
       const Particles& p = *nodes.particles[c.material];
       const Mat3 half = 0.5 * nodes.h.asDiagonal() * (p.F[c.particle] * p.psize[c.particle]);
-      const double centre = (p.x[c.particle] - xg).dot(n);
+      const double centre = c.offset.dot(n);
       for (int col = 0; col < 3; ++col) {
         const double r = std::abs(half.col(col).dot(n));
         if (c.material == a) prominence[a] = std::max(prominence[a], centre + r);
@@ -188,10 +199,26 @@ void FrictionLRContact::exchange(ContactStage, ContactNodes& nodes) const {
       const Vec3 t = tangential / (dvt + 1e-100);
       const double mu = std::min(mu_, dvt / dvn);
       const Vec3 Dv = -dvn * m_dir - mu * dvn * t;
+      if (!nodes.friction_work.empty()) {  // <do_contact_friction_heating>: beta against alpha
+        ContactPair pair;
+        pair.ma = mb, pair.mb = ma;
+        pair.va = (*nodes.velocity[b])[g], pair.vb = (*nodes.velocity[a])[g];
+        pair.n = m_dir;
+        record_friction_work(nodes, g, b, {a}, pair, mb * Dv);
+      }
       (*nodes.velocity[b])[g] += Dv;
       (*nodes.velocity[a])[g] -= Dv * (mb / ma);
     }
   }
+  if (nodes.canonical)  // the aliases take their representative's velocities (and work)
+    for (std::size_t g = 0; g < count; ++g) {
+      const std::size_t c = home(g);
+      if (c == g || slot[c] < 0) continue;
+      for (int m : materials_) {
+        (*nodes.velocity[m])[g] = (*nodes.velocity[m])[c];
+        if (!nodes.friction_work.empty()) nodes.friction_work[m][g] = nodes.friction_work[m][c];
+      }
+    }
 }
 
 }  // namespace tephra

@@ -14,6 +14,9 @@
 //    the reference's to round-off (<= 1e-12 m, 1e-12 m/s);
 //  - total x momentum conserved to round-off in the periodic run;
 //  - the collision happened: B carries more than 30 % of the momentum at the end.
+// friction_LR (linear and gimp) gathers each node's point cloud over its
+// periodic aliases, positions relative to the alias each particle weights
+// (mpm/contact/FrictionLRContact.cpp), so it takes the same path.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -47,7 +50,7 @@ std::string contact_deck(const std::string& interp, const std::string& contact, 
   s << "<Uintah_specification><SimulationComponent type=\"mpm\"/>"
     << "<MPM><interpolator>" << interp << "</interpolator></MPM>"
     << "<MaterialProperties><MPM>" << material(0.625, 0.9375, 0.5, shift_a) << material(0.0, 0.3125, 0.0, shift_b) << "<contact><type>"
-    << contact << "</type>" << (contact == "friction" || contact == "approach" ? "<mu>0.3</mu>" : "")
+    << contact << "</type>" << (contact == "friction" || contact == "approach" || contact == "friction_LR" ? "<mu>0.3</mu>" : "")
     << (contact == "friction_bard" ? "<mu>0.3</mu><separation_factor>0.9</separation_factor>" : "") << "<materials>[0,1]</materials>"
     << "</contact></MPM></MaterialProperties><Grid><Level><Box label=\"1\"><lower>[0,0,0]</lower><upper>[1," << kH
     << "," << kH << "]</upper><extraCells>[" << (periodic_x ? 0 : 1) << ",0,0]</extraCells><patches>[1,1,1]</patches>"
@@ -114,7 +117,8 @@ TEST_P(PeriodicContact, CollisionAcrossTheSeamEqualsTheUnwrappedOne) {
 
 INSTANTIATE_TEST_SUITE_P(Interpolators, PeriodicContact,
                          ::testing::Values(Case{"linear", "single_velocity"}, Case{"gimp", "friction"},
-                                           Case{"cpdi", "friction_bard"}, Case{"3rdorderBS", "approach"}),
+                                           Case{"cpdi", "friction_bard"}, Case{"3rdorderBS", "approach"},
+                                           Case{"linear", "friction_LR"}, Case{"gimp", "friction_LR"}),
                          [](const auto& info) {
                            return std::string(info.param.interp) + "_" + info.param.contact;
                          });
