@@ -154,6 +154,7 @@ void MpmComponent::interpolate_to_grid(MpmMaterial& m, int step, const char* pha
                        ? compute_axisymmetric_stencils(m.particles, m.grid, setup_.flags.interpolator.kind, m.stencils)
                        : compute_stencils(m.particles, m.grid, setup_.flags.interpolator, m.stencils);
   if (bad >= 0) fail_particle(m, std::size_t(bad), step, phase, "particle is outside the grid");
+  PatchBand* band = prepare_band(m);  // also orders each block by particle id (ScatterOrder::sort_blocks_by_id)
   // Columns into the scatter order when enough particles changed block
   // (mpm/ParticleReorder.h), then the stencils of the new order (index = identity).
   // Not with MPMICE (its per-particle arrays are not permuted here).
@@ -162,14 +163,15 @@ void MpmComponent::interpolate_to_grid(MpmMaterial& m, int step, const char* pha
     PhaseTimers::Scope r(phase_timers(), "MPM: reorder particles");
     reorder_particles(m);
     compute_axis_stencils(m.particles, m.grid, setup_.flags.interpolator, m.stencils);
+    if (band) m.stencils.order.sort_blocks_by_id(m.particles.id.data());
   }
   // The threaded scatters' particle order (compute_stencils / compute_axis_stencils build their own).
   if (!axis_form && setup_.flags.axisymmetric) order_scatter(m.grid, m.stencils);
   m.grid.reset();
   if (with_internal_force && !setup_.flags.axisymmetric)
-    particles_to_grid_and_internal_force(m.particles, m.stencils, setup_.gravity, m.grid);  // f_int,g too (Alg. 6)
+    particles_to_grid_and_internal_force(m.particles, m.stencils, setup_.gravity, m.grid, band);  // f_int,g too (Alg. 6)
   else
-    particles_to_grid(m.particles, m.stencils, setup_.gravity, m.grid);
+    particles_to_grid(m.particles, m.stencils, setup_.gravity, m.grid, band);
   sum_particles_to_grid(m.grid);  // over the MPI ranks (mpm/MpmRanks.cpp; no-op in one process)
   fold_particle_sums(periodic_, m.grid);  // periodic aliases share the sums
   // Symmetry faces as mirrors: extra-cell sums onto their mirror nodes (mpm/SymmetryFold.h;
@@ -177,6 +179,25 @@ void MpmComponent::interpolate_to_grid(MpmMaterial& m, int step, const char* pha
   fold_symmetry_particle_sums(m.bcs, m.grid, fold_dims(setup_.flags));
   m.bcs.apply(m.grid, m.grid.velocity);
   copy_from_canonical(periodic_, m.grid.velocity);  // the ghosts follow their images
+}
+
+// The band of mpm/PatchBand.h for several patches, not periodic (the alias
+// folds would add sums of other patches' partials) and not axisymmetric (its
+// internal force is not band-summed yet). Reach: a per-axis stencil of N
+// nodes holds the particle's cell nodes c or c + 1, so it lies in
+// [c - (N - 2), c + 1 + (N - 2)]; one node more covers a position on a cell
+// face (patch_of's cell against the stencil's). Flat stencils: the widest
+// footprint, which holds the cell nodes as well. On ranks the widest over all
+// ranks, so that every rank builds the same band.
+PatchBand* MpmComponent::prepare_band(MpmMaterial& m) {
+  band_used_ = setup_.grid.patches.size() > 1 && !periodic_.active() && !setup_.flags.axisymmetric;
+  if (!band_used_) return nullptr;
+  const ScatterOrder& o = m.stencils.order;
+  int reach = o.built_for(m.particles.size()) ? (m.stencils.axis_nodes ? o.span - 1 : o.span) : 0;
+  if (layout_.distributed) reach = int(-layout_.min(-double(reach)));
+  band_.prepare(setup_.grid, m.grid, reach);
+  m.stencils.order.sort_blocks_by_id(m.particles.id.data());
+  return &band_;
 }
 
 void MpmComponent::reorder_particles(MpmMaterial& m) {
@@ -203,7 +224,8 @@ void MpmComponent::project_to_grid(MpmMaterial& m, int step, const char* phase) 
 // scattered: the sum over the particles was taken by P2G (particles_to_grid_and_internal_force).
 void MpmComponent::internal_force(MpmMaterial& m, bool scattered) {
   if (setup_.flags.axisymmetric) axisymmetric_internal_force(m.particles, m.stencils, m.grid);
-  else if (!scattered) compute_internal_force(m.particles, m.stencils, m.grid);
+  else if (!scattered) compute_internal_force(m.particles, m.stencils, m.grid, band());
+  if (band() && !setup_.flags.axisymmetric) keep_band_on_one_rank(m.grid.internal_force.front().data(), 3);
   sum_node_vectors(m.grid.internal_force);  // over the MPI ranks
   fold_internal_force(periodic_, m.grid);
   fold_symmetry_internal_force(m.bcs, m.grid, fold_dims(setup_.flags));
@@ -502,11 +524,14 @@ void MpmComponent::advance(double t, double dt, int step) {
         if (!contact && !periodic_.active()) {
           // Only the nodes keep_stable_usl_nodes keeps below (none: USL everywhere; same bits).
           usl_needed_nodes(m.grid, fill_limit[i], cell_volume, musl_needed_);
-          updated_particle_grid_velocity_at(m.particles, m.stencils, m.grid, dt, musl_needed_, musl_velocity_[i]);
+          updated_particle_grid_velocity_at(m.particles, m.stencils, m.grid, dt, musl_needed_, musl_velocity_[i],
+                                            band());
         } else {
           updated_particle_grid_velocity(m.particles, m.stencils, m.grid, dt,
-                                         periodic_.active() ? &periodic_.canonical : nullptr, musl_velocity_[i]);
+                                         periodic_.active() ? &periodic_.canonical : nullptr, musl_velocity_[i],
+                                         band());
         }
+        if (band()) keep_band_on_one_rank(musl_velocity_[i].front().data(), 3);
         sum_node_vectors(musl_velocity_[i]);  // over the MPI ranks (divided by the global m_g already)
         fold_symmetry_velocity(m.bcs, m.grid, musl_velocity_[i], fold_dims(setup_.flags));
         m.bcs.apply(m.grid, musl_velocity_[i]);

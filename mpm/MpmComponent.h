@@ -21,6 +21,7 @@
 #include "mpm/NodeGrid.h"
 #include "mpm/PrescribedDeformation.h"
 #include "mpm/ParticleSeeding.h"
+#include "mpm/PatchBand.h"
 #include "mpm/RankNodeSums.h"
 #include "mpm/PeriodicGrid.h"
 #include "mpm/Particles.h"
@@ -176,6 +177,16 @@ class MpmComponent final : public Component {
   void migrate_particles();                // particles to the ranks owning their new patches
   PatchLayout layout_;
   RankNodeSums node_sums_;
+  // Node sums in ascending patch order (mpm/PatchBand.h) with several patches
+  // (not periodic, not axisymmetric): the same bits in one process and on ranks.
+  PatchBand band_;
+  bool band_used_ = false;                 // the last prepare_band set it up (P2G, f_int, MUSL use it)
+  PatchBand* prepare_band(MpmMaterial& m); // this step's band for m's stencils; null when not used
+  PatchBand* band() { return band_used_ ? &band_ : nullptr; }
+  // On ranks, before combining a band-summed array: every band node kept only
+  // on the lowest rank whose box holds it, 0 elsewhere, so the combine adds
+  // that one value to zeros (mpm/MpmRanks.cpp).
+  void keep_band_on_one_rank(double* data, int width);
   bool keep_whole_level_ = false, laid_out_ = false;
   MpmSetup setup_;
   // Stable step for the next advance(), set by the last stress update from

@@ -130,6 +130,7 @@ void MpmComponent::lay_out_patches() {
     for (const Vec3& x : m.particles.x) ++count[std::size_t(patch_of(x))];
   layout_ = PatchLayout::over_world_ranks(setup_.grid, count);
   if (!layout_.distributed) return;
+  band_.set_ranks(layout_.owner, world_ranks().rank, [](const std::vector<double>& v) { return all_gather(v); });
   check_rank_support();
   for (MpmMaterial& m : setup_.materials) keep_own_particles(m);
 }
@@ -198,7 +199,29 @@ void MpmComponent::sum_particles_to_grid(NodeGrid& g) {
                               {g.velocity.front().data(), 3, 0},
                               {g.external_force.front().data(), 3, -1}};
   if (!g.stress.empty()) a.push_back({g.stress.front().data(), 9, 1});
+  if (band())
+    for (const NodeArray& x : a) keep_band_on_one_rank(x.data, x.width);
   node_sums_.combine(a);
+}
+
+// After PatchBand::reduce every rank holds the same ordered sum at every band
+// node, and a node outside the band holds its sum on the rank owning the one
+// patch that reaches it (0 on the others). Kept on the lowest rank whose box
+// holds it and zeroed elsewhere, each node has one non-zero contribution, and
+// the combine's rank-ordered sum 0 + ... + x + 0 ... is x, bit for bit (a
+// weighted mean with one rank of non-zero weight keeps that rank's value).
+void MpmComponent::keep_band_on_one_rank(double* data, int width) {
+  if (!layout_.distributed || !band() || data == nullptr) return;
+  const int me = node_sums_.rank();
+  const IntVec3 n = setup_.materials.front().grid.n;
+  for (std::size_t gi : band_.band_node_index()) {
+    const int i = int(gi % std::size_t(n[0])), j = int((gi / std::size_t(n[0])) % std::size_t(n[1])),
+              k = int(gi / (std::size_t(n[0]) * std::size_t(n[1])));
+    int keeper = -1;
+    for (int r = 0; r < node_sums_.size() && keeper < 0; ++r)
+      if (node_sums_.box(r).contains(i, j, k)) keeper = r;
+    if (keeper != me) std::fill(data + gi * std::size_t(width), data + (gi + 1) * std::size_t(width), 0.0);
+  }
 }
 
 void MpmComponent::sum_node_vectors(std::vector<Vec3>& v) {

@@ -1,8 +1,10 @@
 #include "mpm/Transfers.h"
 
+#include "mpm/PatchBand.h"
 #include "mpm/shape/AxisStencils.h"
 
 #include <algorithm>
+#include <type_traits>
 #include <cmath>
 
 
@@ -29,8 +31,12 @@ constexpr std::size_t kMinParallel = 4096;
 // P2G of particle i into g (V: a stencil view, AxisStencils.h); the V sigma
 // sums only if Stress (g.stressFS wanted, NodeGrid::node_stress); with Force
 // also f_int,g -= V_p (sigma_p - q_p I) grad S (compute_internal_force's term).
-template <bool Stress, bool Force, class V>
-inline void p2g_particle(const Particles& p, const V& s, const Vec3& body_force, std::size_t i, NodeGrid& g) {
+// Band (mpm/PatchBand.h): the particle's patch P >= 0 routes the terms of
+// band nodes into the (node, P) partials (layout m, V, m v, f_ext, f_int,
+// V sigma), every other node directly; the same expressions either way.
+template <bool Stress, bool Force, bool Band, class V>
+inline void p2g_particle(const Particles& p, const V& s, const Vec3& body_force, std::size_t i, NodeGrid& g,
+                         PatchBand* band, int P) {
   const double mp = p.mass[i], vp = p.volume[i];
   const Vec3 momentum = mp * p.v[i];
   const Vec3 force = p.external_force[i] + mp * body_force;
@@ -41,6 +47,10 @@ inline void p2g_particle(const Particles& p, const V& s, const Vec3& body_force,
   Vec3* mom = g.velocity.data();
   Vec3* fext = g.external_force.data();
   Mat3* stress = g.stress.data();
+  Mat3 force_stress;
+  // sigma - q I: the artificial bulk viscosity acts in the force only.
+  if constexpr (Force) force_stress = vp * (p.stress[i] - p.q[i] * Mat3::Identity());
+  Vec3* fint = g.internal_force.data();
   auto add = [&](std::size_t gi, double wk) {
     mass[gi] += mp * wk;
     volume[gi] += vp * wk;
@@ -48,10 +58,25 @@ inline void p2g_particle(const Particles& p, const V& s, const Vec3& body_force,
     fext[gi] += force * wk;
     if constexpr (Stress) stress[gi] += vol_stress * wk;
   };
-  if constexpr (Force) {
-    // sigma - q I: the artificial bulk viscosity acts in the force only.
-    const Mat3 force_stress = vp * (p.stress[i] - p.q[i] * Mat3::Identity());
-    Vec3* fint = g.internal_force.data();
+  if constexpr (Band) {
+    auto add_band = [&](std::size_t gi, double wk, const Vec3& gr) {
+      const int k = band->slot(gi);
+      if (k < 0) {
+        add(gi, wk);
+        if constexpr (Force) fint[gi] -= force_stress * gr;
+        return;
+      }
+      double* q = band->partial(k, P);
+      q[0] += mp * wk;
+      q[1] += vp * wk;
+      Eigen::Map<Vec3>(q + 2) += momentum * wk;
+      Eigen::Map<Vec3>(q + 5) += force * wk;
+      if constexpr (Force) Eigen::Map<Vec3>(q + 8) -= force_stress * gr;
+      if constexpr (Stress) Eigen::Map<Mat3>(q + 11) += vol_stress * wk;
+    };
+    if constexpr (Force) s.entries(i, add_band);
+    else s.weights(i, [&](std::size_t gi, double wk) { add_band(gi, wk, Vec3::Zero()); });
+  } else if constexpr (Force) {
     // entries() gives S_gp with the same product as weights() (AxisStencils.h).
     s.entries(i, [&](std::size_t gi, double wk, const Vec3& gr) {
       add(gi, wk);
@@ -62,19 +87,43 @@ inline void p2g_particle(const Particles& p, const V& s, const Vec3& body_force,
   }
 }
 
+// The band sums (PatchBand::reduce) into the node arrays of P2G.
+void reduce_p2g_band(PatchBand& band, bool stress, bool force, NodeGrid& g) {
+  band.reduce(stress ? PatchBand::kMaxWidth : 11, [&](std::size_t gi, const double* q) {
+    g.mass[gi] = q[0];
+    g.volume[gi] = q[1];
+    g.velocity[gi] = Eigen::Map<const Vec3>(q + 2);
+    g.external_force[gi] = Eigen::Map<const Vec3>(q + 5);
+    if (force) g.internal_force[gi] = Eigen::Map<const Vec3>(q + 8);
+    if (stress) g.stress[gi] = Eigen::Map<const Mat3>(q + 11);
+  });
+}
+
 // P2G (with the internal force when Force), then v_g = momentum / m_g and sigma_g = (V sigma)_g / V_g.
 template <bool Force>
-void scatter_particles(const Particles& p, const Stencils& s, const Vec3& body_force, NodeGrid& g) {
+void scatter_particles(const Particles& p, const Stencils& s, const Vec3& body_force, NodeGrid& g,
+                       PatchBand* band) {
   const std::size_t np = p.size(), nn = g.count();
   const bool stress = g.stress.size() == nn;
+  if (band && !band->active()) band = nullptr;
   visit_stencils(s, [&](const auto& view) {
-    if (stress)
-      for_each_scatter_particle(s.order, np,
-                                [&](std::size_t i) { p2g_particle<true, Force>(p, view, body_force, i, g); });
-    else
-      for_each_scatter_particle(s.order, np,
-                                [&](std::size_t i) { p2g_particle<false, Force>(p, view, body_force, i, g); });
+    auto run = [&](auto stress_tag) {
+      constexpr bool S = decltype(stress_tag)::value;
+      if (band)
+        for_each_scatter_particle(s.order, np, [&](std::size_t i) {
+          const int P = band->tag(p.x[i]);
+          if (P < 0) p2g_particle<S, Force, false>(p, view, body_force, i, g, band, P);
+          else p2g_particle<S, Force, true>(p, view, body_force, i, g, band, P);
+        });
+      else
+        for_each_scatter_particle(s.order, np, [&](std::size_t i) {
+          p2g_particle<S, Force, false>(p, view, body_force, i, g, nullptr, -1);
+        });
+    };
+    if (stress) run(std::true_type{});
+    else run(std::false_type{});
   });
+  if (band) reduce_p2g_band(*band, stress, Force, g);
 #pragma omp parallel for schedule(static) if (nn >= kMinParallel)
   for (std::size_t gi = 0; gi < nn; ++gi) {
     if (g.mass[gi] > 0.0) g.velocity[gi] /= g.mass[gi];
@@ -84,24 +133,39 @@ void scatter_particles(const Particles& p, const Stencils& s, const Vec3& body_f
 
 }  // namespace
 
-void particles_to_grid(const Particles& p, const Stencils& s, const Vec3& body_force, NodeGrid& g) {
-  scatter_particles<false>(p, s, body_force, g);
+void particles_to_grid(const Particles& p, const Stencils& s, const Vec3& body_force, NodeGrid& g,
+                       PatchBand* band) {
+  scatter_particles<false>(p, s, body_force, g, band);
 }
 
 void particles_to_grid_and_internal_force(const Particles& p, const Stencils& s, const Vec3& body_force,
-                                          NodeGrid& g) {
-  scatter_particles<true>(p, s, body_force, g);
+                                          NodeGrid& g, PatchBand* band) {
+  scatter_particles<true>(p, s, body_force, g, band);
 }
 
-void compute_internal_force(const Particles& p, const Stencils& s, NodeGrid& g) {
+void compute_internal_force(const Particles& p, const Stencils& s, NodeGrid& g, PatchBand* band) {
   Vec3* fint = g.internal_force.data();
+  if (band && !band->active()) band = nullptr;
   visit_stencils(s, [&](const auto& view) {
     for_each_scatter_particle(s.order, p.size(), [&](std::size_t i) {
       // sigma - q I: the artificial bulk viscosity acts in the force only.
       const Mat3 vol_stress = p.volume[i] * (p.stress[i] - p.q[i] * Mat3::Identity());
-      view.entries(i, [&](std::size_t gi, double, const Vec3& gr) { fint[gi] -= vol_stress * gr; });
+      const int P = band ? band->tag(p.x[i]) : -1;
+      if (P < 0) {
+        view.entries(i, [&](std::size_t gi, double, const Vec3& gr) { fint[gi] -= vol_stress * gr; });
+        return;
+      }
+      view.entries(i, [&](std::size_t gi, double, const Vec3& gr) {  // band particle (PatchBand.h)
+        const int k = band->slot(gi);
+        if (k < 0) fint[gi] -= vol_stress * gr;
+        else Eigen::Map<Vec3>(band->partial(k, P)) -= vol_stress * gr;
+      });
     });
   });
+  // The band nodes: 0 - sum over the patches in ascending id of their partials
+  // (each partial formed from 0 as -sum ...; the node array held 0 there).
+  if (band)
+    band->reduce(3, [&](std::size_t gi, const double* q) { fint[gi] = Eigen::Map<const Vec3>(q); });
 }
 
 void integrate_grid_velocity(NodeGrid& g, double dt) {

@@ -12,16 +12,24 @@
 
 namespace tephra {
 
+class PatchBand;
+
+// The scatters below take an optional PatchBand (mpm/PatchBand.h): with an
+// active one every node sum is formed per patch and the partials of the
+// band nodes are added in ascending patch id (the same bits in one process
+// and on MPI ranks); without one (nullptr) the sums run in the scatter order
+// straight into the node arrays.
+
 // P2G (Alg. 5, eqs. 1.62, 1.64, 1.69), on a reset grid:
 //   m_g = sum m_p S,  V_g = sum V_p S,  v_g = (sum m_p v_p S) / m_g,
 //   f_ext,g = sum (f_ext,p + m_p b) S,  sigma_g = (sum V_p sigma_p S) / V_g.
 // Nodes with m_g = 0 keep v_g = 0. sigma_g only when g.stress is sized (NodeGrid::node_stress).
 void particles_to_grid(const Particles& p, const Stencils& s, const Vec3& body_force,
-                       NodeGrid& g);
+                       NodeGrid& g, PatchBand* band = nullptr);
 
 // f_int,g = - sum V_p (sigma_p - q_p I) grad S_gp   (Alg. 6, eq. 1.70; sigma, V at t_n;
 // q_p the artificial bulk viscosity, 0 unless <artificial_viscosity>).
-void compute_internal_force(const Particles& p, const Stencils& s, NodeGrid& g);
+void compute_internal_force(const Particles& p, const Stencils& s, NodeGrid& g, PatchBand* band = nullptr);
 
 // particles_to_grid and compute_internal_force in one pass over the particles
 // and their stencils, on a reset grid: every node sum takes the same terms in
@@ -29,7 +37,7 @@ void compute_internal_force(const Particles& p, const Stencils& s, NodeGrid& g);
 // calls. For the step when nothing between P2G and the internal force changes
 // sigma_p, V_p or q_p (no contact, no MPMICE; MpmComponent::advance).
 void particles_to_grid_and_internal_force(const Particles& p, const Stencils& s, const Vec3& body_force,
-                                          NodeGrid& g);
+                                          NodeGrid& g, PatchBand* band = nullptr);
 
 // a_g = (f_int,g + f_ext,g) / m_g,  v*_g = v_g + a_g dt   (Alg. 7, eqs. 1.71-1.72).
 void integrate_grid_velocity(NodeGrid& g, double dt);

@@ -2,12 +2,39 @@
 
 #include <algorithm>
 
+#include "mpm/PatchBand.h"
 #include "mpm/shape/AxisStencils.h"
 
 namespace tephra {
 
+namespace {
+
+// o[gi] += S momentum for every stencil node of particle i; with a band and a
+// band particle (patch P >= 0) the band nodes' terms go to their (node, P) partials.
+template <class View>
+inline void scatter_momentum(const View& view, std::size_t i, const Vec3& momentum, Vec3* o, PatchBand* band,
+                             int P) {
+  if (P < 0) {
+    view.weights(i, [&](std::size_t gi, double wk) { o[gi] += wk * momentum; });
+    return;
+  }
+  view.weights(i, [&](std::size_t gi, double wk) {
+    const int k = band->slot(gi);
+    if (k < 0) o[gi] += wk * momentum;
+    else Eigen::Map<Vec3>(band->partial(k, P)) += wk * momentum;
+  });
+}
+
+void reduce_momentum(PatchBand* band, Vec3* o) {
+  if (band) band->reduce(3, [&](std::size_t gi, const double* q) { o[gi] = Eigen::Map<const Vec3>(q); });
+}
+
+}  // namespace
+
 void updated_particle_grid_velocity(const Particles& p, const Stencils& s, const NodeGrid& g, double dt,
-                                    const std::vector<std::size_t>* canonical, std::vector<Vec3>& out) {
+                                    const std::vector<std::size_t>* canonical, std::vector<Vec3>& out,
+                                    PatchBand* band) {
+  if (band && !band->active()) band = nullptr;
   const std::size_t nodes = g.mass.size();
   out.assign(nodes, Vec3::Zero());
   // sum m_p S_gp v_p^{n+1}, in the scatter order of P2G (ScatterOrder.h: the
@@ -19,9 +46,10 @@ void updated_particle_grid_velocity(const Particles& p, const Stencils& s, const
       Vec3 a = Vec3::Zero();
       view.weights(i, [&](std::size_t gi, double wk) { a += wk * acc[gi]; });
       const Vec3 momentum = p.mass[i] * (p.v[i] + dt * a);
-      view.weights(i, [&](std::size_t gi, double wk) { o[gi] += wk * momentum; });
+      scatter_momentum(view, i, momentum, o, band, band ? band->tag(p.x[i]) : -1);
     });
   });
+  reduce_momentum(band, o);
   if (canonical && !canonical->empty()) {
     std::vector<Vec3> sum(nodes, Vec3::Zero());
     for (std::size_t n = 0; n < nodes; ++n) sum[(*canonical)[n]] += out[n];
@@ -79,7 +107,9 @@ std::size_t usl_needed_nodes(const NodeGrid& g, double limit, double cell_volume
 }
 
 void updated_particle_grid_velocity_at(const Particles& p, const Stencils& s, const NodeGrid& g, double dt,
-                                       const std::vector<unsigned char>& needed, std::vector<Vec3>& out) {
+                                       const std::vector<unsigned char>& needed, std::vector<Vec3>& out,
+                                       PatchBand* band) {
+  if (band && !band->active()) band = nullptr;
   const std::size_t nodes = g.mass.size();
   out.resize(nodes);
   Vec3* o = out.data();
@@ -98,9 +128,10 @@ void updated_particle_grid_velocity_at(const Particles& p, const Stencils& s, co
       Vec3 a = Vec3::Zero();
       view.weights(i, [&](std::size_t gi, double wk) { a += wk * acc[gi]; });
       const Vec3 momentum = p.mass[i] * (p.v[i] + dt * a);
-      view.weights(i, [&](std::size_t gi, double wk) { o[gi] += wk * momentum; });
+      scatter_momentum(view, i, momentum, o, band, band ? band->tag(p.x[i]) : -1);
     });
   });
+  reduce_momentum(band, o);
 #pragma omp parallel for schedule(static) if (nodes >= 4096)
   for (std::size_t n = 0; n < nodes; ++n)
     if (need[n]) o[n] = g.mass[n] > 0.0 ? Vec3(o[n] / g.mass[n]) : Vec3::Zero();

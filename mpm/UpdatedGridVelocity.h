@@ -25,12 +25,17 @@
 
 namespace tephra {
 
+class PatchBand;
+
 // out[g] = v_g^{n+1} above (0 where m_g = 0), from g.acceleration (after contact
 // and BCs) and the particles at t_n. `canonical` (may be null) maps each node
 // to the representative of its periodic alias set (mpm/PeriodicGrid.h): the
 // momentum is summed over each set, as P2G does.
+// band (may be null): the momentum sums per patch, added in ascending patch id
+// at the band nodes (mpm/PatchBand.h), before the division by m_g.
 void updated_particle_grid_velocity(const Particles& p, const Stencils& s, const NodeGrid& g, double dt,
-                                    const std::vector<std::size_t>* canonical, std::vector<Vec3>& out);
+                                    const std::vector<std::size_t>* canonical, std::vector<Vec3>& out,
+                                    PatchBand* band = nullptr);
 
 }  // namespace tephra
 
@@ -54,7 +59,8 @@ std::size_t usl_needed_nodes(const NodeGrid& g, double limit, double cell_volume
 // so a needed node's sum has the same terms in the same order: the same bits.
 // With no needed node there is nothing to sum (USL everywhere).
 void updated_particle_grid_velocity_at(const Particles& p, const Stencils& s, const NodeGrid& g, double dt,
-                                       const std::vector<unsigned char>& needed, std::vector<Vec3>& out);
+                                       const std::vector<unsigned char>& needed, std::vector<Vec3>& out,
+                                       PatchBand* band = nullptr);
 
 inline double usl_fill_limit(double courant) { return 2.0 * courant * courant / (4.0 + courant * courant); }
 

@@ -255,6 +255,7 @@ void order_scatter(const NodeGrid& g, Stencils& s) {
     // Per-axis form: footprint N x N node rows from the base node.
     const int N = s.axis_nodes;
     o.prepare(np, g.n[1], g.n[2], N, N);
+    o.span = N;
 #pragma omp parallel for schedule(static) if (count >= 4096)
     for (long i = 0; i < count; ++i) {
       const std::size_t b = s.base[std::size_t(i)];
@@ -265,20 +266,24 @@ void order_scatter(const NodeGrid& g, Stencils& s) {
     // interpolator); the widths from the largest footprint of all particles.
     const std::size_t W = std::size_t(s.width);
     std::vector<int> y0(np), z0(np);
-    int span_y = 1, span_z = 1;
-#pragma omp parallel for schedule(static) reduction(max : span_y, span_z) if (count >= 4096)
+    int span_x = 1, span_y = 1, span_z = 1;
+#pragma omp parallel for schedule(static) reduction(max : span_x, span_y, span_z) if (count >= 4096)
     for (long i = 0; i < count; ++i) {
-      int ylo = g.n[1], yhi = -1, zlo = g.n[2], zhi = -1;
+      int xlo = g.n[0], xhi = -1, ylo = g.n[1], yhi = -1, zlo = g.n[2], zhi = -1;
       for (std::size_t k = std::size_t(i) * W; k < std::size_t(i + 1) * W; ++k) {
+        const int x = int(s.node[k] % nx);
         const int y = int((s.node[k] / nx) % std::size_t(g.n[1])), z = int(s.node[k] / nxy);
+        xlo = std::min(xlo, x), xhi = std::max(xhi, x);
         ylo = std::min(ylo, y), yhi = std::max(yhi, y), zlo = std::min(zlo, z), zhi = std::max(zhi, z);
       }
+      span_x = std::max(span_x, xhi - xlo + 1);
       y0[std::size_t(i)] = ylo;
       z0[std::size_t(i)] = zlo;
       span_y = std::max(span_y, yhi - ylo + 1);
       span_z = std::max(span_z, zhi - zlo + 1);
     }
     o.prepare(np, g.n[1], g.n[2], span_y, span_z);
+    o.span = std::max({span_x, span_y, span_z});
     for (std::size_t i = 0; i < np; ++i) o.key[i] = o.block_key(y0[i], z0[i]);
   }
   o.finish();

@@ -84,4 +84,24 @@ void ScatterOrder::finish() {
   particles = np;
 }
 
+void ScatterOrder::sort_blocks_by_id(const long long* id) {
+  if (particles == 0) return;
+  const long blocks = long(block.size()) - 1;
+  std::size_t moved = 0;
+#pragma omp parallel for schedule(static) reduction(+ : moved) if (particles >= 4096)
+  for (long b = 0; b < blocks; ++b) {
+    std::uint32_t* first = index.data() + block[std::size_t(b)];
+    std::uint32_t* last = index.data() + block[std::size_t(b) + 1];
+    for (std::uint32_t* a = first + 1; a < last; ++a) {
+      const std::uint32_t v = *a;
+      const long long key = id[v];
+      std::uint32_t* c = a;
+      for (; c > first && id[*(c - 1)] > key; --c) *c = *(c - 1);
+      *c = v;
+    }
+    for (std::uint32_t* a = first; a < last; ++a) moved += *a != std::uint32_t(a - index.data());
+  }
+  displaced = moved;
+}
+
 }  // namespace tephra

@@ -38,6 +38,7 @@ struct ScatterOrder {
   int width_y = 1, width_z = 1;       // block widths w in node rows
   int blocks_y = 1, blocks_z = 1;     // blocks per direction
   std::size_t displaced = 0;          // particles with index[j] != j (0: the storage is in scatter order)
+  int span = 1;                       // widest footprint in node rows over x, y, z (mpm/PatchBand.h's reach)
 
   bool built_for(std::size_t np) const { return particles == np && index.size() == np && np > 0; }
 
@@ -54,6 +55,13 @@ struct ScatterOrder {
   // Step 3: counting sort of the keys (stable: ascending index inside a
   // block) into index / block / colour, and the count `displaced`. O(np + blocks).
   void finish();
+  // Inside every block, the particles in ascending id (insertion sort: O(n)
+  // when the storage is nearly in that order already, as after a reorder),
+  // and `displaced` again. The scatter order is then (colour, block, id):
+  // it depends on the positions and ids only, not on the storage order, so
+  // one process and any number of MPI ranks visit each patch's particles in
+  // the same order (mpm/PatchBand.h). Still the same for any thread count.
+  void sort_blocks_by_id(const long long* id);
 };
 
 }  // namespace tephra
