@@ -60,7 +60,7 @@ class PatchBand {
   std::size_t pairs() const { return pair_patch_.size(); }
 
   // -1: the particle at x is interior (writes directly); else its patch id.
-  int tag(const Vec3& x) const {
+  [[gnu::always_inline]] int tag(const Vec3& x) const {
     std::size_t c = 0, stride = 1;
     for (int d = 0; d < 3; ++d) {
       int i = int(std::floor((x[d] - lower_[d]) / dx_[d])) + off_[d];  // MpmComponent::patch_of's cell

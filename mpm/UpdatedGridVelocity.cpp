@@ -12,7 +12,7 @@ namespace {
 // o[gi] += S momentum for every stencil node of particle i; with a band and a
 // band particle (patch P >= 0) the band nodes' terms go to their (node, P) partials.
 template <class View>
-inline void scatter_momentum(const View& view, std::size_t i, const Vec3& momentum, Vec3* o, PatchBand* band,
+[[gnu::flatten]] inline void scatter_momentum(const View& view, std::size_t i, const Vec3& momentum, Vec3* o, PatchBand* band,
                              int P) {
   if (P < 0) {
     view.weights(i, [&](std::size_t gi, double wk) { o[gi] += wk * momentum; });
