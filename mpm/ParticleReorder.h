@@ -19,7 +19,8 @@
 // in a different order, so they differ from an unordered run by round-off
 // (docs/performance.md gives the measured differences). They stay
 // deterministic and the same for any thread count: the order depends only on
-// the particle positions and the previous storage order.
+// the particle positions and the previous storage order (with several
+// patches, on the positions and ids only: ScatterOrder::sort_blocks_by_id).
 #include <cstddef>
 #include <cstdint>
 #include <cstring>

@@ -18,7 +18,11 @@
 //                   value when that rank scattered the same particles in the
 //                   same order).
 // Against one process the sums at nodes shared by boxes are added in another
-// order (per rank, then over ranks), so they agree to round-off, not bits.
+// order (per rank, then over ranks), so they agree to round-off, not bits --
+// except for P2G, the internal force and the MUSL velocity, which are first
+// summed per patch in patch order (mpm/PatchBand.h) and kept on one rank per
+// node (MpmComponent::keep_band_on_one_rank): the combine then moves those
+// bits unchanged.
 #include <cstddef>
 #include <vector>
 
