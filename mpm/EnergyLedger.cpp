@@ -11,13 +11,14 @@ const std::vector<const char*>& energy_ledger_labels() {
 
 void add_node_terms(const NodeGrid& g, const std::vector<Vec3>& v_p2g, const std::vector<Vec3>& v_c,
                     const std::vector<Vec3>& v_star, const std::vector<Vec3>& v_contact,
-                    const std::vector<Vec3>& v_final, double dt, EnergyLedger& ledger) {
+                    const std::vector<Vec3>& v_final, double dt, EnergyLedger& ledger,
+                    const std::vector<char>* counted) {
   const long n = static_cast<long>(g.count());
   double contact = 0.0, boundary = 0.0, work = 0.0, grid_increment = 0.0;
 #pragma omp parallel for schedule(static) reduction(+ : contact, boundary, work, grid_increment) if (n >= 65536)
   for (long i = 0; i < n; ++i) {
     const double m = g.mass[i];
-    if (!(m > 0.0)) continue;
+    if (!(m > 0.0) || (counted && !(*counted)[std::size_t(i)])) continue;
     grid_increment += 0.5 * m * (g.acceleration[i] * dt).squaredNorm();
     for (int d = 0; d < 3; ++d) {
       const double v0 = v_p2g[i][d], vc = v_c[i][d], vs = v_star[i][d], vk = v_contact[i][d], vf = v_final[i][d];

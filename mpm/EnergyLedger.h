@@ -37,7 +37,11 @@
 // The grid BCs applied to v_g after P2G are not counted: a_g is taken against
 // the corrected v_g, and the components they correct are set again on v*_g, so
 // Delta_g is zero in them and the particles never see that change.
-// Computed only when the deck saves one of the labels; one MPI rank only.
+// Computed only when the deck saves one of the labels. On MPI ranks every
+// node is counted by one rank (the lowest whose node box holds it: after the
+// node combines it holds the global m_g and velocities there), every particle
+// by its own, and the step's four terms are added over the ranks in rank
+// order: the 1-rank totals to round-off.
 #include <vector>
 
 #include "core/base/Types.h"
@@ -58,10 +62,12 @@ const std::vector<const char*>& energy_ledger_labels();
 
 // Adds one material's node terms of the step to the ledger (the definitions above):
 // v_p2g = v_g, v_c = v^c_g, v_star = v*_g, v_contact = v*_g after the integrated contact,
-// v_final = v^f_g, and 1/2 sum_g m_g |a_g dt|^2 to transfer_loss.
+// v_final = v^f_g, and 1/2 sum_g m_g |a_g dt|^2 to transfer_loss. `counted`
+// (MPI ranks): only the nodes with counted[g] != 0 (each node on one rank).
 void add_node_terms(const NodeGrid& g, const std::vector<Vec3>& v_p2g, const std::vector<Vec3>& v_c,
                     const std::vector<Vec3>& v_star, const std::vector<Vec3>& v_contact,
-                    const std::vector<Vec3>& v_final, double dt, EnergyLedger& ledger);
+                    const std::vector<Vec3>& v_final, double dt, EnergyLedger& ledger,
+                    const std::vector<char>* counted = nullptr);
 
 // 1/2 sum_p m_p |v_p - v_old_p|^2 (the particle part of TransferKineticEnergyLoss).
 double particle_increment_energy(const Particles& p, const std::vector<Vec3>& v_old);

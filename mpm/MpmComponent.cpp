@@ -440,9 +440,13 @@ void MpmComponent::advance(double t, double dt, int step) {
   if (coupling_) coupling_->after_interpolate_to_grid(t, dt, step);
   // The kinetic-energy ledger (mpm/EnergyLedger.h): KE_g at each velocity correction of the step.
   const bool ledger = setup_.energy_ledger;
-  if (ledger && layout_.distributed)
-    throw MissingFeature({}, "the kinetic-energy ledger labels (" + std::string(energy_ledger_labels()[0]) +
-                                 ", ...) on more than one MPI rank");
+  // On MPI ranks each rank adds this step's terms of the nodes it counts (those
+  // of its box no lower rank's box holds: every node with mass once) and of its
+  // particles into ledger_step; the four totals are added over the ranks at the
+  // end of the step. One process adds straight into ledger_ (its bits unchanged).
+  EnergyLedger ledger_step;
+  EnergyLedger& ledger_sink = layout_.distributed ? ledger_step : ledger_;
+  const std::vector<char> ledger_nodes = ledger && layout_.distributed ? first_holder_nodes() : std::vector<char>{};
   if (ledger) {
     ledger_velocity_.resize(mats.size());
     for (std::size_t i = 0; i < mats.size(); ++i) ledger_velocity_[i][0] = mats[i].grid.velocity;  // v_g
@@ -499,7 +503,8 @@ void MpmComponent::advance(double t, double dt, int step) {
   if (ledger)  // v_g, v^c_g = g.velocity, v*_g, after contact, v^f_g = g.velocity_star (mpm/EnergyLedger.h)
     for (std::size_t i = 0; i < mats.size(); ++i)
       add_node_terms(mats[i].grid, ledger_velocity_[i][0], mats[i].grid.velocity, ledger_velocity_[i][1],
-                     ledger_velocity_[i][2], mats[i].grid.velocity_star, dt, ledger_);
+                     ledger_velocity_[i][2], mats[i].grid.velocity_star, dt, ledger_sink,
+                     ledger_nodes.empty() ? nullptr : &ledger_nodes);
   //    <use_prescribed_deformation>: v*_g = l x_g, so that F follows F*(t) (mpm/PrescribedDeformation.h).
   if (setup_.prescribed) {
     const Mat3 l = setup_.prescribed->step_velocity_gradient(t, dt);
@@ -567,7 +572,11 @@ void MpmComponent::advance(double t, double dt, int step) {
         update_deformation_gradients(alg, setup_.flags.deformation_gradient_terms, dt, m.L, m.F_old, p.F);
       }
       if (musl) std::swap(m.grid.velocity_star, musl_velocity_[i]);  // G2P moves the particles with v*_g
-      if (setup_.flags.pressure_stabilization) stabilize_pressure(m.grid, p);  // eqs. 1.82-1.84
+      if (setup_.flags.pressure_stabilization) {  // eqs. 1.82-1.84 (mpm/PressureStabilization.h)
+        std::vector<double> cell_sums = cell_volume_sums(m.grid, p);  // {V_c0, V_c} at each cell's lower node
+        sum_node_doubles(cell_sums, 2);  // over the MPI ranks: a cell's particles may sit on two
+        apply_cell_dilatation(m.grid, cell_sums, p);
+      }
       if (m.model->rigid()) std::fill(p.F.begin(), p.F.end(), Mat3::Identity());
     }
   }
@@ -594,7 +603,7 @@ void MpmComponent::advance(double t, double dt, int step) {
       const std::vector<Vec3> v_old = setup_.flags.maximum_particle_velocity < 3e105 ? p.v : std::vector<Vec3>{};
       const std::vector<Vec3> v_ledger = ledger ? p.v : std::vector<Vec3>{};  // v_n (mpm/EnergyLedger.h)
       grid_to_particles(m.stencils, m.grid, dt, p);
-      if (ledger) ledger_.transfer_loss -= particle_increment_energy(p, v_ledger);
+      if (ledger) ledger_sink.transfer_loss -= particle_increment_energy(p, v_ledger);
       wrap_periodic_positions(setup_.grid, p);  // re-enter through the opposite periodic face
       update_temperatures(m, dt);  // T += dt (sum rate_g S + model heating)
       if (contact && !contact_nodes_.friction_work.empty())  // T += sum S W_g/(c_v m_g) (FrictionHeating.h)
@@ -628,6 +637,12 @@ void MpmComponent::advance(double t, double dt, int step) {
       delete_particles(m, v_old.empty() ? p.v : v_old, step);  // Vaango's limits (mpm/ParticleDeletion.h)
     }
   }
+  if (ledger && layout_.distributed) {  // the step's ledger terms over the ranks, in rank order
+    ledger_.contact_removed += sum_over_ranks(ledger_step.contact_removed);
+    ledger_.boundary_removed += sum_over_ranks(ledger_step.boundary_removed);
+    ledger_.grid_force_work += sum_over_ranks(ledger_step.grid_force_work);
+    ledger_.transfer_loss += sum_over_ranks(ledger_step.transfer_loss);
+  }
   // On MPI ranks: particles that entered another rank's patch move there (mpm/MpmRanks.cpp).
   migrate_particles();
   time_ = t + dt;
@@ -636,7 +651,11 @@ void MpmComponent::advance(double t, double dt, int step) {
 double MpmComponent::mms_displacement_error() const {
   double e2 = 0.0;
   for (const MpmMaterial& m : setup_.materials)
-    if (m.mms) e2 += std::pow(mms_displacement_error_l2(*m.mms, m.particles, time_), 2);
+    if (m.mms) {  // per material: sqrt(sum V0 |u - u*|^2 / sum V0), both sums over the MPI ranks
+      const auto [num, den] = mms_displacement_error_sums(*m.mms, m.particles, time_);
+      const double n = sum_over_ranks(num), d = sum_over_ranks(den);
+      e2 += std::pow(d > 0.0 ? std::sqrt(n / d) : 0.0, 2);
+    }
   return std::sqrt(e2);
 }
 

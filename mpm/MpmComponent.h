@@ -173,6 +173,9 @@ class MpmComponent final : public Component {
   void set_node_boxes();                   // this step's node boxes of all ranks (a collective)
   void sum_particles_to_grid(NodeGrid& g); // P2G arrays over the ranks (mpm/RankNodeSums.h)
   double sum_over_ranks(double local) const;  // in rank order, the same bits on every rank
+  // Per node of the grid: 1 where this rank is the lowest whose node box holds
+  // the node (each node any box holds is counted by exactly one rank), else 0.
+  std::vector<char> first_holder_nodes() const;
   RankSum load_totals() const;             // the loads' surface totals over the ranks (mpm/loads/RankSum.h)
   void migrate_particles();                // particles to the ranks owning their new patches
   PatchLayout layout_;

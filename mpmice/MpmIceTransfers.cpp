@@ -174,26 +174,28 @@ void MpmIceComponent::pressure_to_particles() {
 
 // f_int,g -= V_p p_p grad S_gp (Uintah's computeInternalForce with ICE: the
 // stress sigma_p + p_p I).
+// MPM has combined f_int,g over the MPI ranks before this hook, so the
+// pressure term is scattered into an array of its own, summed over the ranks,
+// then added: f_int,g + (-sum_p V_p p_p grad S_gp). One process does the same
+// (session 18; before, it subtracted each particle's term from f_int,g in
+// place): with one association on 1 and N ranks a node that only one rank's
+// particles reach gets the same bits on any rank count; before, every node
+// with solid differed in its last bits between 1 and N ranks
+// (f - a - b against f + (-a - b)), not only the nodes at patch cuts.
 void MpmIceComponent::add_internal_forces() {
-  const bool ranks = mpm_->layout().distributed;
   for (std::size_t s = 0; s < mpm_->materials().size(); ++s) {
     MpmMaterial& mm = mpm_->materials()[s];
     const Stencils& st = mm.stencils;
     const std::vector<double>& pp = particle_pressure_[s];
-    // On MPI ranks MPM has summed f_int,g over the ranks already: the
-    // pressure term is scattered apart, summed over the ranks, then added.
-    std::vector<Vec3> rank_sum;
-    if (ranks) rank_sum.assign(mm.grid.count(), Vec3::Zero());
-    std::vector<Vec3>& f = ranks ? rank_sum : mm.grid.internal_force;
+    std::vector<Vec3> pressure_force(mm.grid.count(), Vec3::Zero());
     visit_stencils(st, [&](const auto& view) {
       for (std::size_t i = 0; i < mm.particles.size(); ++i) {
         const double vp = mm.particles.volume[i] * pp[i];
-        view.entries(i, [&](std::size_t gi, double, const Vec3& grad) { f[gi] -= vp * grad; });
+        view.entries(i, [&](std::size_t gi, double, const Vec3& grad) { pressure_force[gi] -= vp * grad; });
       }
     });
-    if (!ranks) continue;
-    mpm_->sum_node_vectors(rank_sum);
-    for (std::size_t gi = 0; gi < rank_sum.size(); ++gi) mm.grid.internal_force[gi] += rank_sum[gi];
+    mpm_->sum_node_vectors(pressure_force);  // over the MPI ranks (no-op in one process)
+    for (std::size_t gi = 0; gi < pressure_force.size(); ++gi) mm.grid.internal_force[gi] += pressure_force[gi];
   }
 }
 

@@ -169,13 +169,18 @@ void apply_mms_body_force(const ManufacturedSolution& mms, double t, Particles& 
   for (std::size_t i = 0; i < p.size(); ++i) p.external_force[i] = p.mass[i] * mms.body_force(p.x[i] - p.displacement[i], t);
 }
 
-double mms_displacement_error_l2(const ManufacturedSolution& mms, const Particles& p, double t) {
+std::array<double, 2> mms_displacement_error_sums(const ManufacturedSolution& mms, const Particles& p, double t) {
   double num = 0.0, den = 0.0;
   for (std::size_t i = 0; i < p.size(); ++i) {
     const Vec3 X = p.x[i] - p.displacement[i];
     num += p.volume0[i] * (p.displacement[i] - mms.displacement(X, t)).squaredNorm();
     den += p.volume0[i];
   }
+  return {num, den};
+}
+
+double mms_displacement_error_l2(const ManufacturedSolution& mms, const Particles& p, double t) {
+  const auto [num, den] = mms_displacement_error_sums(mms, p, t);
   return den > 0.0 ? std::sqrt(num / den) : 0.0;
 }
 

@@ -6,6 +6,7 @@
 //   b(X, t) = d2u/dt2 - (1/rho0) Div P(F(X, t)),   F = I + Grad u.
 // The run starts from u(X, 0), du/dt(X, 0), F(X, 0); every step applies
 // f_ext,p = m_p b(X_p, t_n) with X_p = x_p - u_p (Vaango: p.externalforce).
+#include <array>
 #include <memory>
 #include <string>
 #include <vector>
@@ -71,5 +72,8 @@ void apply_mms_body_force(const ManufacturedSolution& mms, double t, Particles& 
 // L2 norm of the displacement error over the particles, weighted by the
 // reference volume: sqrt( sum V0_p |u_p - u(X_p, t)|^2 / sum V0_p ).
 double mms_displacement_error_l2(const ManufacturedSolution& mms, const Particles& p, double t);
+// Its two sums {sum V0_p |u_p - u(X_p, t)|^2, sum V0_p} over the particles of p
+// (on MPI ranks each rank's, added over the ranks before the root is taken).
+std::array<double, 2> mms_displacement_error_sums(const ManufacturedSolution& mms, const Particles& p, double t);
 
 }  // namespace tephra

@@ -8,7 +8,8 @@
 #      rho_CC, press_CC, vel_CC must print the same text.
 #   2. Restart 2 -> 1: a copy of np2 restarted by one process from its
 #      checkpoint before the end; 1 -> 2: a copy of np1 restarted by
-#      mpirun -np 2. Both must end with np1's .dat files and fields.
+#      mpirun -np 2; 2 -> 4: a copy of np2 restarted by mpirun -np 4 (one
+#      patch per rank). All must end with np1's .dat files and fields.
 # Variables: TEPHRA, MPIEXEC, DECK_IN, WORK.
 cmake_minimum_required(VERSION 3.16)
 
@@ -64,3 +65,11 @@ expect_same_output(${WORK}/np1 ${WORK}/restart21 "checkpoint of 2 ranks restarte
 file(COPY ${WORK}/np1/ DESTINATION ${WORK}/restart12)
 run(${MPI2} ${TEPHRA} --restart ${WORK}/restart12 --quiet)
 expect_same_output(${WORK}/np1 ${WORK}/restart12 "checkpoint of 1 rank restarted on 2")
+
+# 2 -> 4 (issue 7 item 4): the 2-rank checkpoint continued by 4 ranks
+# (oversubscribed on small machines: yield when idle so waiting ranks give up their core).
+set(ENV{OMPI_MCA_mpi_yield_when_idle} 1)
+set(ENV{OMP_NUM_THREADS} 1)  # unbound oversubscribed ranks would each start a thread per core
+file(COPY ${WORK}/np2/ DESTINATION ${WORK}/restart24)
+run(${MPIEXEC} -n 4 ${TEPHRA} --restart ${WORK}/restart24 --quiet)
+expect_same_output(${WORK}/np1 ${WORK}/restart24 "checkpoint of 2 ranks restarted on 4")

@@ -37,6 +37,7 @@
 #include "core/io/OutputFrame.h"
 #include "core/io/StateArchive.h"
 #include "core/parallel/Ranks.h"
+#include "tests/mpi/MpmRankCompare.h"
 #include "tests/mpi/RankCompare.h"
 #include "mpm/MpmComponent.h"
 
@@ -175,47 +176,8 @@ const std::set<std::string> kParticleLabels = {"p.velocity", "p.stress", "p.defo
 const std::set<std::string> kSums = {"KineticEnergy", "StrainEnergy", "TotalMass", "TotalMomentum",
                                      "ThermalEnergy"};
 
-// Worst relative difference of the gathered particle fields and the .dat sums of b against a.
 double compare(const MpmComponent& a, const MpmComponent& b) {
-  OutputFrame fa, fb;
-  std::set<std::string> labels = kParticleLabels;
-  a.fill_output(labels, fa);
-  b.fill_output(labels, fb);  // gathered from every rank, ascending id
-  double worst = 0;
-  EXPECT_EQ(fa.particles.size(), fb.particles.size());
-  for (std::size_t k = 0; k < std::min(fa.particles.size(), fb.particles.size()); ++k) {
-    const ParticleBlock& x = fa.particles[k];
-    const ParticleBlock& y = fb.particles[k];
-    EXPECT_EQ(x.id, y.id) << "every id exactly once, material " << x.material;
-    const double dx = relative_difference(flat(x.position), flat(y.position));
-    EXPECT_LE(dx, 1e-12) << "p.x";
-    worst = std::max(worst, dx);
-    EXPECT_EQ(x.fields.size(), y.fields.size());
-    for (std::size_t f = 0; f < std::min(x.fields.size(), y.fields.size()); ++f) {
-      const double d = relative_difference(x.fields[f].values, y.fields[f].values);
-      EXPECT_LE(d, 1e-12) << x.fields[f].label;
-      worst = std::max(worst, d);
-    }
-  }
-  auto ra = a.reductions(kSums);
-  auto rb = b.reductions(kSums);
-  // TotalMomentum may be 0 to round-off: relative to sum m |v| <= M max |v|.
-  double vmax = 0;
-  for (const ParticleBlock& x : fa.particles)
-    for (const FieldArray& f : x.fields)
-      if (f.label == "p.velocity")
-        for (double v : f.values) vmax = std::max(vmax, std::abs(v));
-  const double momentum_scale = ra["TotalMass"][0] * std::max(vmax, 1e-300);
-  for (const auto& [label, values] : ra) {
-    double d = relative_difference(values, rb[label]);
-    if (label == "TotalMomentum") {
-      d = 0;
-      for (int k = 0; k < 3; ++k) d = std::max(d, std::abs(values[k] - rb[label][k]) / momentum_scale);
-    }
-    EXPECT_LE(d, 1e-12) << label;
-    worst = std::max(worst, d);
-  }
-  return worst;
+  return test::compare_mpm_runs(a, b, kParticleLabels, kSums, 1e-12);
 }
 
 struct Case {
