@@ -28,7 +28,7 @@ void mass_gradient(const Particles& p, const Stencils& s, const NodeGrid& g, std
 // a body one cell thick between two symmetry faces (plane strain) gets normals
 // tilted 45 degrees out of plane, and a Coulomb exchange that removes the
 // in-plane approach then takes sqrt(2) times the normal impulse, so friction
-// is sqrt(2) mu (docs/mpm-contact.md, "Friction on symmetry planes").
+// is sqrt(2) mu (docs/mpm-contact.md, "Coulomb friction against closed forms").
 // Vaango applies its Symmetric BC to the normals (FrictionContact).
 void mirror_gradient_at_symmetry_faces(const GridBoundaryConditions& bcs, const NodeGrid& g, std::vector<Vec3>& gradient,
                                        int dims = 3);

@@ -3,7 +3,7 @@
 // released on an incline of theta = 0.3 rad (mu = 0, 0.15, 0.5), for every
 // Coulomb contact type and two resolutions. Prints the measured acceleration
 // of the block against the closed form. Not a ctest; figures for docs/mpm-contact.md.
-//   usage: bench_friction_slide [type ...] [--refine N] [--interp NAME]
+//   usage: bench_friction_slide [type ...] [--refine N] [--interp NAME] [--extra N] [--slide-only]
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -20,10 +20,12 @@ int main(int argc, char** argv) {
   std::vector<int> refines = {1, 2};
   std::string interp = "linear";
   bool slide_only = false;
+  int extra = 0;
   for (int i = 1; i < argc; ++i) {
     if (!std::strcmp(argv[i], "--refine") && i + 1 < argc) refines = {std::atoi(argv[++i])};
     else if (!std::strcmp(argv[i], "--interp") && i + 1 < argc) interp = argv[++i];
     else if (!std::strcmp(argv[i], "--slide-only")) slide_only = true;
+    else if (!std::strcmp(argv[i], "--extra") && i + 1 < argc) extra = std::atoi(argv[++i]);
     else types.push_back(argv[i]);
   }
   if (types.empty()) types = {"friction", "friction_bard", "friction_LR", "approach"};
@@ -31,7 +33,7 @@ int main(int argc, char** argv) {
   for (const std::string& type : types)
     for (int refine : refines) {
       FrictionScene s;
-      s.contact = type, s.refine = refine, s.interpolator = interp;
+      s.contact = type, s.refine = refine, s.interpolator = interp, s.extra_cells = extra;
       s.mu = 0.3, s.u0 = 1.0, s.heating = true;
       FrictionRun r = run_friction_scene(s);
       const double Q = s.mu * r.mass * g * r.distance;
@@ -42,7 +44,7 @@ int main(int argc, char** argv) {
       if (slide_only) continue;
       for (double mu : {0.0, 0.15, 0.5}) {
         FrictionScene q;
-        q.contact = type, q.refine = refine, q.interpolator = interp;
+        q.contact = type, q.refine = refine, q.interpolator = interp, q.extra_cells = extra;
         q.mu = mu, q.theta = 0.3, q.u0 = 0.0;
         FrictionRun ri = run_friction_scene(q);
         const double exact = mu >= std::tan(q.theta) ? 0.0 : g * (std::sin(q.theta) - mu * std::cos(q.theta));

@@ -54,7 +54,8 @@ FrictionRun run_friction_scene(const FrictionScene& sc) {
        << "<Face side='y+'><BCType id='all' var='symmetry' label='Symmetric'></BCType></Face>"
        << "</BoundaryConditions><Level><Box><lower>[0,0,0]</lower><upper>[0.4," << h << "," << 4 * H
        << "]</upper><resolution>[" << 16 * sc.refine << ",1," << 4 * sc.refine
-       << "]</resolution><extraCells>[0,0,0]</extraCells><patches>[1,1,1]</patches></Box></Level></Grid>"
+       << "]</resolution><extraCells>[" << sc.extra_cells << "," << sc.extra_cells << "," << sc.extra_cells
+       << "]</extraCells><patches>[1,1,1]</patches></Box></Level></Grid>"
        << "</Uintah_specification>";
   auto parsed = load_deck_from_string(deck.str(), "friction_scene.ups", ".");
   auto c = make_mpm_component(*parsed);

@@ -28,6 +28,7 @@ struct FrictionScene {
   double u0 = 0.0;                     // block's initial velocity along x [m/s]
   int refine = 1;                      // h = 0.025 / refine
   std::string interpolator = "linear";
+  int extra_cells = 0;                 // <extraCells> in every direction (gimp, B-splines)
   bool heating = false;                // <do_contact_friction_heating>
   double end_time = 0.05;
 };
