@@ -12,10 +12,10 @@
 //   gravity g (sin theta, 0, -cos theta), g = 10: the slab's surface is the
 //   plane z = 0.025 of an incline of angle theta; 2x2x2 particles per cell.
 // The block is a rigid body on average: its mass-weighted velocity u(t)
-// along the incline obeys M du/dt = M g sin(theta) - F_t, and Coulomb's law
-// with the normal force N = M g cos(theta) gives
-//   slip:  du/dt = g (sin(theta) - mu cos(theta)) sign(u) ...
-//   stick: u = 0 when mu >= tan(theta) and u0 = 0.
+// along x obeys M du/dt = M g sin(theta) - F_t, and Coulomb's law with the
+// normal force N = M g cos(theta) gives, while it slides towards +x (u > 0),
+//   F_t = mu N:  du/dt = g (sin(theta) - mu cos(theta))   (flat: -mu g),
+// and from rest it sticks (u = 0) when mu >= tan(theta).
 #include <string>
 #include <vector>
 
