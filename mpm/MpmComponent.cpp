@@ -322,6 +322,9 @@ void MpmComponent::exchange_momentum(ContactStage stage, double t, double dt, bo
     for (std::vector<Vec3>& n : c.position) sum_node_vectors(n);
     // Periodic aliases (mpm/PeriodicGrid.h): normals summed, positions folded as offsets.
     for (std::vector<Vec3>& n : c.gradient) fold_vectors(periodic_, n);
+    // Symmetry faces: the mirrored particles' share of the gradients (ContactNormals.h).
+    for (std::size_t i = 0; i < c.gradient.size(); ++i)
+      mirror_gradient_at_symmetry_faces(mats[i].bcs, mats[i].grid, c.gradient[i], fold_dims(setup_.flags));
     for (std::size_t i = 0; i < c.position.size(); ++i) fold_positions(periodic_, mats[i].grid, c.position[i]);
     // <collinear_bimaterial_contact_normals>: body-averaged normals (ContactNormals.h).
     if (setup_.flags.collinear_contact_normals) collinear_normals(c.grid, c.gradient);

@@ -85,6 +85,11 @@ void fold_symmetry_scalar(const GridBoundaryConditions& bcs, const NodeGrid& g, 
     if (active(bcs, g, f)) fold_field(g, f, q);
 }
 
+void fold_symmetry_vectors(const GridBoundaryConditions& bcs, const NodeGrid& g, std::vector<Vec3>& v, int dims) {
+  for (int f = 0; f < 6; ++f)
+    if (active(bcs, g, f, dims)) fold_field(g, f, v);
+}
+
 void fold_symmetry_internal_force(const GridBoundaryConditions& bcs, NodeGrid& g, int dims) {
   for (int f = 0; f < 6; ++f)
     if (active(bcs, g, f, dims)) fold_field(g, f, g.internal_force);

@@ -49,6 +49,11 @@ void fold_symmetry_internal_force(const GridBoundaryConditions& bcs, NodeGrid& g
 // folds the momentum v m_g (unfolded sum) and divides again.
 void fold_symmetry_velocity(const GridBoundaryConditions& bcs, const NodeGrid& g, std::vector<Vec3>& velocity,
                             int dims = 3);
+// A vector node sum v (of g's node layout) that reflects as a vector, e.g. the
+// mass gradient sum m_p grad S_gp (the mirrored particle at R x gives node m
+// the term R (m grad S_e(x)), since S_m(R x) = S_e(x)): v_m += R v_e, the same
+// faces in the same order as fold_symmetry_particle_sums.
+void fold_symmetry_vectors(const GridBoundaryConditions& bcs, const NodeGrid& g, std::vector<Vec3>& v, int dims = 3);
 // One extensive node sum q (of g's node layout), folded as
 // fold_symmetry_particle_sums folds g.mass: the same faces, in the same order.
 void fold_symmetry_scalar(const GridBoundaryConditions& bcs, const NodeGrid& g, std::vector<double>& q);

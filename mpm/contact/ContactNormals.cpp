@@ -1,5 +1,6 @@
 #include "mpm/contact/ContactNormals.h"
 
+#include "mpm/SymmetryFold.h"
 #include "mpm/shape/AxisStencils.h"
 
 namespace tephra {
@@ -14,6 +15,19 @@ void mass_gradient(const Particles& p, const Stencils& s, const NodeGrid& g, std
   // mass gradient (and so every contact normal) lies in the r-z plane.
   if (s.hoop_factor)
     for (Vec3& v : out) v[2] = 0.0;
+}
+
+void mirror_gradient_at_symmetry_faces(const GridBoundaryConditions& bcs, const NodeGrid& g, std::vector<Vec3>& gradient,
+                                       int dims) {
+  fold_symmetry_vectors(bcs, g, gradient, dims);  // extra-cell layers onto their mirrors
+  for (int f = 0; f < 2 * dims; ++f) {
+    if (bcs.face[f].kind != FaceVelocityBC::Kind::Symmetry) continue;
+    const int d = f / 2, a = (d + 1) % 3, b = (d + 2) % 3;
+    IntVec3 c;
+    c[d] = (f % 2 == 0) ? g.extra[d] : g.n[d] - 1 - g.extra[d];
+    for (c[b] = 0; c[b] < g.n[b]; ++c[b])
+      for (c[a] = 0; c[a] < g.n[a]; ++c[a]) gradient[g.index(c)][d] = 0.0;
+  }
 }
 
 void collinear_normals(const std::vector<const NodeGrid*>& grids, std::vector<std::vector<Vec3>>& gradient) {

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "core/base/Types.h"
+#include "mpm/GridBoundaryConditions.h"
 #include "mpm/NodeGrid.h"
 #include "mpm/Particles.h"
 #include "mpm/shape/Interpolator.h"
@@ -14,6 +15,23 @@ namespace tephra {
 // g_g = sum_p m_p grad S_g(x_p)   (VT eq. 1.107): the mass gradient at the
 // node, pointing out of the body (from its particles towards empty space).
 void mass_gradient(const Particles& p, const Stencils& s, const NodeGrid& g, std::vector<Vec3>& out);
+
+// Symmetry faces (<BCType var="symmetry">) are mirrors: the body continues
+// as its mirror image R x across the face (mpm/SymmetryFold.h). The mirrored
+// particles add to the mass gradient of node m the term R (m_p grad S_e(x_p)),
+// e the extra-cell node mirror of m, so
+//   g_m += R g_e            (extra-cell layers, when the BCs set them), and
+//   g . e_d = 0             on the face plane (the node is its own mirror:
+//                            g + R g has no normal part),
+// for the faces of the first `dims` directions (3; 2 for axisymmetric runs).
+// Without it the normal at a face node points out through the symmetry plane:
+// a body one cell thick between two symmetry faces (plane strain) gets normals
+// tilted 45 degrees out of plane, and a Coulomb exchange that removes the
+// in-plane approach then takes sqrt(2) times the normal impulse, so friction
+// is sqrt(2) mu (docs/mpm-contact.md, "Coulomb friction against closed forms").
+// Vaango applies its Symmetric BC to the normals (FrictionContact).
+void mirror_gradient_at_symmetry_faces(const GridBoundaryConditions& bcs, const NodeGrid& g, std::vector<Vec3>& gradient,
+                                       int dims = 3);
 
 // <MPM><collinear_bimaterial_contact_normals>true: the body-averaged normals
 // (VT §1.7.5 after eq. 1.117, "for multiple objects an average gradient";

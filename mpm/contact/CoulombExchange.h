@@ -64,7 +64,9 @@ void record_friction_work(ContactNodes& nodes, std::size_t node, int a, const st
 //     n = g_a/|g_a| or -g_b/|g_b|, so a and b see the same plane;
 //   pair traction: T_n = n . sigma . n with sigma the mass-weighted stress
 //     of the pair (symmetric in a and b);
-//   decide(pair) says whether to apply coulomb_exchange with mu.
+//   decide(pair) says whether to apply coulomb_exchange with mu (every
+//     Coulomb model asks for approach, dv_n > 0, so the normal impulse is
+//     compressive and the friction at most mu times it).
 // Every exchange adds Delta p to a and -Delta p to the lump (a uniform
 // velocity change of the lump), so momentum is conserved to round-off.
 template <class Decide>
