@@ -214,7 +214,8 @@ double order_8_16(const std::string& interpolator, int ppc = 1, double* e8 = nul
 TEST(MpmMmsConvergence, GimpTwoPpcSymmetryFold) {
   double e8 = 0.0;
   EXPECT_GE(order_8_16("gimp", 2, &e8), 1.9);
-  EXPECT_NEAR(e8, kGimpTwoPpcVaangoSize8, 1e-6 * kGimpTwoPpcVaangoSize8);
+  // 1e-4 relative: the value is known to 5 digits; the seeded size's 1.9093e-3 is 3.2e-3 away.
+  EXPECT_NEAR(e8, kGimpTwoPpcVaangoSize8, 1e-4 * kGimpTwoPpcVaangoSize8);
 }
 
 TEST(MpmMmsConvergence, QuadraticBsplineTwoPpcSymmetryFold) { EXPECT_GE(order_8_16("3rdorderBS", 2), 1.8); }
