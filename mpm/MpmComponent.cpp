@@ -8,6 +8,7 @@
 #include <Eigen/LU>
 
 #include "core/base/Errors.h"
+#include "core/base/Log.h"
 #include "core/base/PhaseTimers.h"
 #include "mpm/ArtificialViscosity.h"
 #include "mpm/Axisymmetric.h"
@@ -21,6 +22,7 @@
 #include "mpm/UpdatedGridVelocity.h"
 #include "mpm/contact/ContactNormals.h"
 #include "mpm/contact/FrictionHeating.h"
+#include "mpm/mms/MmsInitialSize.h"
 #include "mpm/loads/BodyForceStress.h"
 
 namespace tephra {
@@ -66,7 +68,26 @@ void MpmComponent::initialize() {
     m.particles = Particles{};
     seed_particles(setup_.grid, m.sources, m.density, m.particles, next_id);
     if (setup_.flags.axisymmetric) make_axisymmetric_particles(setup_.grid.dx, m.density, m.particles);  // per radian
-    if (m.mms) initialize_mms_particles(*m.mms, m.particles);  // x = X + u(X,0), v, F at t = 0
+    if (m.mms) {
+      initialize_mms_particles(*m.mms, m.particles);  // x = X + u(X,0), v, F at t = 0
+      // Vaango's initial p.size (AxisAligned: the deformed domain at t = 0,
+      // kept fixed by gimp; mpm/mms/MmsInitialSize.h). Not for the
+      // domains F p.size (cpdi, cpti, cpgimp: F(X,0) is already in F).
+      const InterpolatorKind k = setup_.flags.interpolator.kind;
+      const bool domain_is_F_size =
+          k == InterpolatorKind::Cpdi || k == InterpolatorKind::Cpti || k == InterpolatorKind::CpGimp;
+      if (mms_deformed_initial_size(*m.mms) && !domain_is_F_size && !setup_.flags.axisymmetric) {
+        // uGIMP's weights (eqs. 1.90-1.92) hold for a half-length l <= h/2:
+        // at 1 particle per cell the deformed size l0 F_dd(X,0) exceeds it
+        // (Vaango's formula then gives weights above 1), so Tephra keeps the
+        // seeded size there and says so.
+        const double max_size = k == InterpolatorKind::Gimp ? 1.0 : std::numeric_limits<double>::infinity();
+        if (!set_mms_deformed_initial_size(*m.mms, m.particles, max_size))
+          log::warning("run_MMS_problem " + m.mms->name() +
+                  ": the deformed initial particle size (Vaango: size F(X,0)) exceeds one cell, outside the "
+                  "uGIMP weights' range l <= h/2; the seeded size is kept (docs/mpm-convergence.md)");
+      }
+    }
     // The model's history columns at their declared initial values.
     m.particles.history.clear();
     for (const HistoryVariable& h : m.model->history()) {

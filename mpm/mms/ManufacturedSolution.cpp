@@ -1,4 +1,5 @@
 #include "mpm/mms/ManufacturedSolution.h"
+#include "mpm/mms/MmsInitialSize.h"
 
 #include <cmath>
 #include <numbers>
@@ -159,6 +160,23 @@ void initialize_mms_particles(const ManufacturedSolution& mms, Particles& p) {
     p.F[i] = mms.deformation_gradient(X, 0.0);
     p.volume[i] = p.F[i].determinant() * p.volume0[i];
   }
+}
+
+bool mms_deformed_initial_size(const ManufacturedSolution& mms) { return mms.name() == "AxisAligned"; }
+
+bool set_mms_deformed_initial_size(const ManufacturedSolution& mms, Particles& p, double max_size) {
+  if (!mms_deformed_initial_size(mms)) return false;
+  // F(X, 0) at the reference position X = x - u (initialize_mms_particles has run).
+  auto deformed = [&](std::size_t i) {
+    const Mat3 F = mms.deformation_gradient(p.x[i] - p.displacement[i], 0.0);
+    Mat3 s = Mat3::Zero();
+    for (int d = 0; d < 3; ++d) s(d, d) = p.psize[i](d, d) * F(d, d);
+    return s;
+  };
+  for (std::size_t i = 0; i < p.size(); ++i)
+    if (deformed(i).diagonal().maxCoeff() > max_size) return false;
+  for (std::size_t i = 0; i < p.size(); ++i) p.psize[i] = deformed(i);
+  return true;
 }
 
 void set_mms_velocity(const ManufacturedSolution& mms, double t, Particles& p) {

@@ -10,7 +10,9 @@
 
 #include <Eigen/LU>
 
+#include "mpm/Particles.h"
 #include "mpm/mms/ManufacturedSolution.h"
+#include "mpm/mms/MmsInitialSize.h"
 
 namespace tephra {
 namespace {
@@ -102,6 +104,48 @@ TEST(MpmMms, ExpandingRingBodyForceBalancesMomentum) {
   EXPECT_EQ(mms->displacement(Vec3(0.5, 0.0, 0.0), 0.0), Vec3::Zero());
   const double g05 = (-2.0 / (0.36 * -0.6)) * 0.25 + (3.0 / (0.36 * -0.6)) * 0.5 + (-2.4 / (0.6 * -0.6));
   EXPECT_NEAR(mms->velocity(Vec3(0.5, 0.0, 0.0), 0.0)[0], 0.1 * 100.0 * std::numbers::pi * g05 * 0.5, 1e-10);
+}
+
+// Vaango's initAxisAligned sets p.size = diag(size_dd F_dd(X, 0)) (the
+// deformed domain at t = 0), F_dd = 1 + A pi cos(pi X_d) sin(phi_d), A = 0.05,
+// phi = (0, 2 pi/3, 4 pi/3); set_mms_deformed_initial_size does the same when
+// every deformed size stays <= max_size, and leaves the sizes otherwise.
+TEST(MpmMms, AxisAlignedInitialSizeIsTheDeformedDomain) {
+  const CnhMmsParams model{8333.0, 3846.0};
+  auto mms = make_axis_aligned_mms(model, 1.0);
+  const double A = 0.05, pi = std::numbers::pi;
+  auto seeded = [](double size) {
+    Particles p;
+    const Mat3 sz = size * Mat3::Identity();
+    long long id = 0;
+    for (double X : {0.03125, 0.40625, 0.96875})
+      for (double Y : {0.03125, 0.53125})
+        for (double Z : {0.09375, 0.71875}) p.add(Vec3(X, Y, Z), Vec3::Zero(), 1.0, 1.0, 300.0, 0.0, id++, sz);
+    return p;
+  };
+  Particles p = seeded(0.5);  // 2 particles per cell direction
+  initialize_mms_particles(*mms, p);
+  ASSERT_TRUE(set_mms_deformed_initial_size(*mms, p, 1.0));
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const Vec3 X = p.x[i] - p.displacement[i];
+    for (int d = 0; d < 3; ++d) {
+      const double Fdd = 1.0 + A * pi * std::cos(pi * X[d]) * std::sin(d * 2.0 * pi / 3.0);
+      EXPECT_NEAR(p.psize[i](d, d), 0.5 * Fdd, 1e-15) << i << " " << d;
+      for (int e = 0; e < 3; ++e)
+        if (e != d) EXPECT_EQ(p.psize[i](d, e), 0.0);
+    }
+  }
+  // One particle per cell: 1 + A pi |sin(2 pi/3)| = 1.136 > 1 at Y near 0, beyond max_size 1.
+  Particles q = seeded(1.0);
+  initialize_mms_particles(*mms, q);
+  EXPECT_FALSE(set_mms_deformed_initial_size(*mms, q, 1.0));
+  for (const Mat3& s : q.psize) EXPECT_EQ(s, Mat3::Identity());
+  EXPECT_TRUE(set_mms_deformed_initial_size(*mms, q, 2.0));
+  // The other solutions keep the seeded size (Vaango's initGeneralizedVortex, initExpandingRing: pSize = size).
+  auto ring = make_expanding_ring_mms(CnhMmsParams{8e6, 5e6}, 1000.0);
+  Particles r = seeded(0.5);
+  EXPECT_FALSE(set_mms_deformed_initial_size(*ring, r, 1.0));
+  for (const Mat3& s : r.psize) EXPECT_EQ(s, 0.5 * Mat3::Identity());
 }
 
 }  // namespace

@@ -32,6 +32,9 @@ struct Threads {
   ~Threads() { set_thread_count(saved); }
 };
 
+// AA 8^3, gimp, 2 ppc, t = 0.005 s, Vaango's initial size (GimpTwoPpcSymmetryFold).
+constexpr double kGimpTwoPpcVaangoSize8 = 1.9032127740e-3;
+
 struct Study {
   double e[3] = {0, 0, 0};  // 8, 16, 32 cells per side
   double order(int k) const { return std::log2(e[k] / e[k + 1]); }
@@ -179,7 +182,7 @@ TEST(MpmMmsConvergence, CpGimpSecondOrder) {
 // 2.0487e-3 -> 5.1755e-4 (1.98). The bounds bracket the observed order, so
 // that a change either way is seen.
 // Observed order 8^3 -> 16^3 (t = 0.005 s) with `ppc` particles per cell direction.
-double order_8_16(const std::string& interpolator, int ppc = 1) {
+double order_8_16(const std::string& interpolator, int ppc = 1, double* e8 = nullptr) {
   Threads one(1);
   double e[2];
   for (int k = 0; k < 2; ++k) {
@@ -189,12 +192,31 @@ double order_8_16(const std::string& interpolator, int ppc = 1) {
     o.end_time = 0.005;
     o.particles_per_cell_dir = ppc;
     e[k] = run_axis_aligned(o).error;
-    std::printf("AA %-10s %2d^3, %d ppc: L2 error %.4e\n", interpolator.c_str(), o.cells, ppc, e[k]);
+    std::printf("AA %-10s %2d^3, %d ppc: L2 error %.10e\n", interpolator.c_str(), o.cells, ppc, e[k]);
   }
+  if (e8) *e8 = e[0];
   return std::log2(e[0] / e[1]);
 }
 
-TEST(MpmMmsConvergence, GimpTwoPpcSymmetryFold) { EXPECT_GE(order_8_16("gimp", 2), 1.8); }
+// The deck as Vaango runs it (res [2,2,2], gimp): Vaango's initAxisAligned sets
+// p.size = size F(X,0) and GIMP keeps it (mpm/mms/MmsInitialSize.h), so the
+// particle domains are the deformed ones of t = 0 for the whole run. Measured
+// (t = 0.005 s, multiplier 0.2, start v(-dt/2); docs/mpm-convergence.md
+// "Session 18"): 1.9032e-3, 4.9176e-4, 1.4747e-4 at 8/16/32 cells, orders
+// 1.95, 1.74 (with the seeded size instead: 1.9093e-3, 5.2281e-4, 1.9170e-4,
+// orders 1.87, 1.45); at Vaango's harness time t = 0.02 s: 6.9788e-3, 1.7614e-3,
+// 5.6061e-4, orders 1.99, 1.65 (seeded size 2.00, 1.75). The 32^3 runs (4 and
+// 16 min) are not in the test: the 16 -> 32
+// order stays below 1.8 at t = 0.005 s (the fixed-domain quadrature error, which
+// the deformed start size reduces but does not remove: the domains match the
+// body at t = 0 only). The 8^3 error is pinned to tell the two sizes apart
+// (they differ by 0.3 %).
+TEST(MpmMmsConvergence, GimpTwoPpcSymmetryFold) {
+  double e8 = 0.0;
+  EXPECT_GE(order_8_16("gimp", 2, &e8), 1.9);
+  // One thread, the same arithmetic on any x86-64 (no FMA): 1e-8 relative; the seeded size's 1.9093e-3 is 3.2e-3 away.
+  EXPECT_NEAR(e8, kGimpTwoPpcVaangoSize8, 1e-8 * kGimpTwoPpcVaangoSize8);
+}
 
 TEST(MpmMmsConvergence, QuadraticBsplineTwoPpcSymmetryFold) { EXPECT_GE(order_8_16("3rdorderBS", 2), 1.8); }
 
