@@ -6,14 +6,15 @@ rate against pressure with the HMX strand-burner data (ExpData.dat).
       writes OUT.ups = the deck with extra <save> labels only (rho_CC,
       temp_CC, vel_CC, burning, surfaceTemp; physics unchanged) and runs
       `nice -n 19 tephra OUT.ups --output OUT --threads 1`.
-  burnrate.py BUILD curve OUTDIR [CSV [PNG]] [--end-time T]
+  burnrate.py BUILD curve OUTDIR [CSV [PNG]] [--end-time T] [--rerun]
       the burn-rate curve: for each pressure of ExpData.dat from 0.24 to
       4.83 MPa, the deck with its initial gas state moved to that pressure
       (both product <density> values scaled by p/p_deck at the deck's
       temperatures, p_deck = omega rho Cv T = 0.45 x 1.38934929 x 594.96 x
       3000 = 1.1159 MPa for the JWL product at this density, whose exponential
       terms vanish; every other line unchanged), run to T (default 6e-6 s,
-      one at a time, nice 19), rate and mean gas pressure as in `analyse`
+      one at a time, nice 19; a run whose output exists is reused unless
+      --rerun), rate and mean gas pressure as in `analyse`
       over the frames after the first microsecond. Prints per pressure the
       simulation, the WSB model at the run's gas pressure (wsb_burn_rate.py)
       and the data (mean of ExpData.dat at that pressure), writes CSV and a
@@ -205,9 +206,13 @@ def main():
     build, mode, out = sys.argv[1], sys.argv[2], sys.argv[3]
     tephra = os.path.join(build, "bin", "tephra")
     if mode == "curve":
-        args = [a for a in sys.argv[4:] if not a.startswith("--")]
-        end = float(sys.argv[sys.argv.index("--end-time") + 1]) if "--end-time" in sys.argv else 6e-6
-        args = [a for a in args if a != str(end) and a != sys.argv[sys.argv.index("--end-time") + 1]] if "--end-time" in sys.argv else args
+        rest, args, end = sys.argv[4:], [], 6e-6
+        while rest:
+            a = rest.pop(0)
+            if a == "--end-time":
+                end = float(rest.pop(0))
+            elif a != "--rerun":
+                args.append(a)
         curve(tephra, out, args[0] if args else None, args[1] if len(args) > 1 else None, end)
         return
     if mode == "run":
