@@ -28,6 +28,7 @@
 
 #include "core/grid/Loop.h"
 #include "ice/AdvectionBounds.h"
+#include "ice/FaceFluidShare.h"
 #include "ice/IceComponent.h"
 
 namespace tephra {
@@ -166,11 +167,16 @@ bool IceComponent::scale_fluid_flux(std::size_t m, double dt, FaceScalars& flux)
       for_each_cell(faces_of(g.patches[pi], d), [&](int i, int j, int k) {
         const IntVec3 R(i, j, k), L = R - e;
         const double theta_face = solids_face_fraction(d, pi, R, dt);
-        const IntVec3 D = um(R) > 0 ? L : R;
-        double fluid = 0;
+        double fluid_L = 0, fluid_R = 0;
         for (std::size_t q = 0; q < nm; ++q)
-          if (!setup_.materials[q].lagrangian) fluid += mats_[q].vol_frac_CC[pi](D);
-        chi(R) = (1.0 - theta_face) / fluid;
+          if (!setup_.materials[q].lagrangian) {
+            fluid_L += mats_[q].vol_frac_CC[pi](L);
+            fluid_R += mats_[q].vol_frac_CC[pi](R);
+          }
+        const double fluid = um(R) > 0 ? fluid_L : fluid_R;  // the donor's fluid fraction
+        // The fluids' share of the face, 1 - theta_s,face, at most the larger
+        // fluid fraction of the two cells (face_fluid_share, comment above).
+        chi(R) = face_fluid_share(theta_face, fluid_L, fluid_R) / fluid;
       });
     }
   // The positivity limit of each interior donor cell (1 where inactive).
