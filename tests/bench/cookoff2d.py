@@ -5,14 +5,16 @@ run through `tephra`: mean container pressure and burned PBX mass against
 time, and the first rupture of the steel container (time and place).
 
 Usage:
-  tests/bench/cookoff2d.py BUILD_DIR run     [OUT] [--end-time T] [--refine K]
+  tests/bench/cookoff2d.py BUILD_DIR run     [OUT] [--end-time T] [--refine K] [--no-stability]
   tests/bench/cookoff2d.py BUILD_DIR analyse [OUT] [--png-dir DIR]
   tests/bench/cookoff2d.py selftest
 (run: the deck, or with --refine K the deck with K x K times more cells in
 the plane (cell size 1.27 mm / K, the z thickness and minimum_particle_mass
 scaled with it), written to OUT/deck.ups and run with --threads 1; then
-analyse. analyse: prints the histories and writes DIR/cookoff2d-pressure.png,
-DIR/cookoff2d-failed.png, DIR/cookoff2d-map.png and DIR/cookoff2d.csv; DIR
+analyse; --no-stability sets the steel's <stability_check> to "none", so that
+only TEPLA (porosity and JC damage) can fail a particle. analyse: prints the histories and writes DIR/cookoff2d-pressure.png,
+DIR/cookoff2d-burned.png, DIR/cookoff2d-failed.png, DIR/cookoff2d-map.png
+(the steel at the last output, failed particles red) and DIR/cookoff2d.csv; DIR
 defaults to OUT. selftest: the rupture-detection rules on hand-made
 lattices; exit 0 when they hold (ctest runs it).)
 
@@ -160,7 +162,7 @@ def analyse(tephra, out, png_dir):
     m0 = sum(float(r["p.mass"]) for r in pbx[t0])
 
     hist, first, first_crack = [], None, None
-    first_in, crack_in = {}, {}  # place -> (t, reference position) of its first failure / crack
+    first_in, crack_in, wall_u = {}, {}, []  # place -> (t, reference position) of its first failure / crack
     for t in times:
         failed = {r["particle_id"]: ref[r["particle_id"]] for r in steel[t] if float(r["p.localized"]) >= 0.5}
         counts = {"side wall": 0, "end cap": 0, "corner": 0}
@@ -180,14 +182,19 @@ def analyse(tephra, out, png_dir):
         p_mean = sum(inside) / len(inside) if inside else float("nan")
         p_max = max(inside) if inside else float("nan")
         burned = m0 - sum(float(r["p.mass"]) for r in pbx.get(t, []))
+        # Outward displacement of the side wall at mid-length (Y < s) and of the cap at its centre (X < s).
+        u_side = [float(r["x"]) - ref[r["particle_id"]][0] for r in steel[t] if ref[r["particle_id"]][1] < s]
+        u_cap = [float(r["y"]) - ref[r["particle_id"]][1] for r in steel[t] if ref[r["particle_id"]][0] < s]
+        wall_u.append((sum(u_side) / max(len(u_side), 1), sum(u_cap) / max(len(u_cap), 1)))
         hist.append((t, p_mean, p_max, burned, len(failed), counts, len(cracks)))
 
     print(f"# {out}: h = {h * 1e3:.4g} mm, {len(ref)} steel particles, PBX {m0:.6g} kg "
           f"({m0 / h:.6g} kg per metre of depth), {len(times)} outputs to t = {times[-1] * 1e3:.4g} ms")
-    print("# t[ms]  p_mean[MPa]  p_max[MPa]  burned[kg/m]  burned/PBX  failed(side,cap,corner)  cracks")
-    for t, pm, px, b, n, c, nc in hist:
+    print("# t[ms]  p_mean[MPa]  p_max[MPa]  burned[kg/m]  burned/PBX  failed(side,cap,corner)  cracks"
+          "  u_side_mid[mm]  u_cap_centre[mm]")
+    for (t, pm, px, b, n, c, nc), (us, uc) in zip(hist, wall_u):
         print(f"{t * 1e3:7.4f} {pm / 1e6:11.4g} {px / 1e6:11.4g} {b / h:12.5g} {b / m0:10.4g}  "
-              f"{n:5d} ({c['side wall']},{c['end cap']},{c['corner']})  {nc}")
+              f"{n:5d} ({c['side wall']},{c['end cap']},{c['corner']})  {nc}  {us * 1e3:8.4g} {uc * 1e3:8.4g}")
     if first is None:
         print("first failure: none in the run")
     else:
@@ -229,15 +236,22 @@ def write_outputs(hist, h, m0, png_dir, last_rows, ref):
                     f"{c['end cap']},{c['corner']},{nc}\n")
     tmax = hist[-1][0] * 1e3
     xt = [round(0.05 * k, 2) for k in range(int(tmax / 0.05) + 2)]
-    pmax = max([pm for _, pm, *_ in hist if pm == pm] + [1.0]) / 1e6
-    top = 10 ** math.ceil(math.log10(pmax)) if pmax > 0 else 1.0
-    top = top / 2 if pmax < top / 2 else top
+    def nice_top(v):
+        """The smallest of 1, 2, 5 x 10^k at or above v."""
+        k = 10 ** math.floor(math.log10(v))
+        return next(m * k for m in (1, 2, 5, 10) if m * k >= v)
+    top = nice_top(max([px for _, _, px, *_ in hist if px == px] + [1e-3]) / 1e6)
     plot_series(os.path.join(png_dir, "cookoff2d-pressure.png"),
                 [([(t * 1e3, pm / 1e6) for t, pm, *_ in hist], (200, 30, 30)),
-                 ([(t * 1e3, b / m0 * top) for t, _, _, b, *_ in hist], (30, 30, 200))],
+                 ([(t * 1e3, px / 1e6) for t, _, px, *_ in hist], (30, 30, 200))],
                 (0, xt[-1]), (0, top), xt, [top * k / 5 for k in range(6)],
-                "T [MS]", "MEAN CONTAINER P [MPA]",
-                [("MEAN P INSIDE", (200, 30, 30)), (f"BURNED FRACTION X {top:g}", (30, 30, 200))])
+                "T [MS]", "PRESSURE INSIDE THE CONTAINER [MPA]",
+                [("MEAN OVER THE INNER BOX", (200, 30, 30)), ("LARGEST CELL", (30, 30, 200))])
+    btop = nice_top(max([b / h * 1e3 for _, _, _, b, *_ in hist] + [1e-6]))
+    plot_series(os.path.join(png_dir, "cookoff2d-burned.png"),
+                [([(t * 1e3, b / h * 1e3) for t, _, _, b, *_ in hist], (30, 30, 200))],
+                (0, xt[-1]), (0, btop), xt, [btop * k / 5 for k in range(6)],
+                "T [MS]", "BURNED PBX [G PER M OF DEPTH]", [("QUARTER SECTION", (30, 30, 200))])
     nmax = max([n for *_, n, _, _ in hist] + [1])
     plot_series(os.path.join(png_dir, "cookoff2d-failed.png"),
                 [([(t * 1e3, c["side wall"]) for t, *_, c, _ in hist], (30, 30, 200)),
@@ -317,6 +331,9 @@ def main():
     build, mode = sys.argv[1], sys.argv[2]
     args = list(sys.argv[3:])
     opts = {}
+    if "--no-stability" in args:
+        args.remove("--no-stability")
+        opts["--no-stability"] = True
     for key in ("--end-time", "--png-dir", "--refine"):
         if key in args:
             i = args.index(key)
@@ -333,6 +350,10 @@ def main():
             text = text.replace("[ 52, 52, 1]", f"[ {n}, {n}, 1]")
             text = text.replace("-0.000635]", f"-{0.000635 / k:.8g}]").replace(" 0.000635]", f" {0.000635 / k:.8g}]")
             text = text.replace("3.e-10", f"{3e-10 / k ** 3:.3g}")
+        if opts.get("--no-stability"):
+            before = text
+            text = text.replace('<stability_check     type="drucker_becker"/>', '<stability_check     type="none"/>')
+            assert text != before, "stability_check not found in the deck"
         deck = os.path.join(out, "deck.ups")
         open(deck, "w").write(text)
         cmd = [tephra, deck, "--output", out, "--threads", "1"]
