@@ -5,14 +5,15 @@ run through `tephra`: mean container pressure and burned PBX mass against
 time, and the first rupture of the steel container (time and place).
 
 Usage:
-  tests/bench/cookoff2d.py BUILD_DIR run     [OUT] [--end-time T] [--refine K] [--no-stability]
+  tests/bench/cookoff2d.py BUILD_DIR run     [OUT] [--end-time T] [--refine K] [--stability TYPE | --no-stability]
   tests/bench/cookoff2d.py BUILD_DIR analyse [OUT] [--png-dir DIR]
   tests/bench/cookoff2d.py selftest
 (run: the deck, or with --refine K the deck with K x K times more cells in
 the plane (cell size 1.27 mm / K, the z thickness and minimum_particle_mass
 scaled with it), written to OUT/deck.ups and run with --threads 1; then
-analyse; --no-stability sets the steel's <stability_check> to "none", so that
-only TEPLA (porosity and JC damage) can fail a particle. analyse: prints the histories and writes DIR/cookoff2d-pressure.png,
+analyse; --stability TYPE sets the steel's <stability_check> (drucker_becker
+in the deck) to TYPE: "none" (= --no-stability: only TEPLA, porosity and JC
+damage, can fail a particle), "becker", "drucker", "acoustic". analyse: prints the histories and writes DIR/cookoff2d-pressure.png,
 DIR/cookoff2d-burned.png, DIR/cookoff2d-failed.png, DIR/cookoff2d-map.png
 (the steel at the last output, failed particles red) and DIR/cookoff2d.csv; DIR
 defaults to OUT. selftest: the rupture-detection rules on hand-made
@@ -333,8 +334,8 @@ def main():
     opts = {}
     if "--no-stability" in args:
         args.remove("--no-stability")
-        opts["--no-stability"] = True
-    for key in ("--end-time", "--png-dir", "--refine"):
+        opts["--stability"] = "none"
+    for key in ("--end-time", "--png-dir", "--refine", "--stability"):
         if key in args:
             i = args.index(key)
             opts[key] = args[i + 1]
@@ -350,9 +351,10 @@ def main():
             text = text.replace("[ 52, 52, 1]", f"[ {n}, {n}, 1]")
             text = text.replace("-0.000635]", f"-{0.000635 / k:.8g}]").replace(" 0.000635]", f" {0.000635 / k:.8g}]")
             text = text.replace("3.e-10", f"{3e-10 / k ** 3:.3g}")
-        if opts.get("--no-stability"):
+        if "--stability" in opts:
             before = text
-            text = text.replace('<stability_check     type="drucker_becker"/>', '<stability_check     type="none"/>')
+            text = text.replace('<stability_check     type="drucker_becker"/>',
+                                f'<stability_check     type="{opts["--stability"]}"/>')
             assert text != before, "stability_check not found in the deck"
         deck = os.path.join(out, "deck.ups")
         open(deck, "w").write(text)
