@@ -76,6 +76,7 @@ void MpmIceComponent::advance(double t, double dt, int step) {
   StepRedo redo;
   redo.who = "MPMICE";
   redo.snapshot = [this]() -> std::function<void()> {
+    PhaseTimers::Scope timer(phase_timers(), "MPMICE: step-redo snapshot");
     auto start = std::make_shared<StateArchive>();
     save_state(*start);
     return [this, start] { load_state(*start); };
