@@ -60,8 +60,10 @@ class Ddt1Model final : public SolidBurnModel {
   void initialize(const Grid& grid, const std::vector<IceMaterialFields>& mats) override {
     SolidBurnModel::initialize(grid, mats);
     for (CellScalars* f : {&F_, &delF_, &detonating_, &det_local_, &branch_, &ts_, &cracked_, &crack_, &burning_code_,
-                           &induction_, &count_, &induction_old_, &count_old_, &burning_old_, &warming_})
+                           &induction_, &count_, &induction_old_, &count_old_, &warming_})
       *f = CellScalars(grid, 0);
+    burning_old_ = CellScalars(grid, 1);  // read at the 3x3x3 neighbours (crack paths)
+    burning_old_.fill(0.0);
     induction_.fill(prm_.first_induction);  // Uintah's initialize: every cell at the sentinel
   }
 
@@ -70,7 +72,10 @@ class Ddt1Model final : public SolidBurnModel {
     if (prm_.induction) {  // last step's values become "old"; this step's start at 0 (Uintah's initialize(0.))
       std::swap(induction_old_, induction_);
       std::swap(count_old_, count_);
-      burning_old_ = burning_code_;
+      for (std::size_t pi = 0; pi < in.grid.patches.size(); ++pi)
+        for_each_cell_serial(in.grid.patches[pi].cells_with_extra(),
+                             [&](int i, int j, int k) { burning_old_[pi](i, j, k) = burning_code_[pi](i, j, k); });
+      if (prm_.thresholds.crack_model) support().exchange_cell_halo(burning_old_);  // neighbours on other patches
       induction_.fill(0.0);
       count_.fill(0.0);
     }

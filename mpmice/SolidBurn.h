@@ -59,6 +59,9 @@ class SolidBurnSupport {
   // Solid s's particles in this process's interior cells (the cell rule of
   // particles_per_cell), in storage order.
   virtual void reactant_particles(std::size_t s, std::vector<BurnParticle>& out) const = 0;
+  // Fills the ghost cells of a model's cell field from the patches (and
+  // ranks) that own them, for a rule that reads a neighbour's value.
+  virtual void exchange_cell_halo(CellScalars& f) = 0;
 };
 
 // The cell a burn law sees.
