@@ -29,4 +29,21 @@ double ddt1_crack_threshold(double p) { return std::sqrt(8.0e8 / std::pow(p, 2.8
 
 double ddt1_convective_area(double cell_volume) { return cell_volume / 0.002; }
 
+double ddt1_flame_speed(const Ddt1InductionParams& prm, double p) { return prm.Fb * std::pow(p / prm.PS, prm.Fc); }
+
+double ddt1_induction_factor(double IC, double theta) {
+  constexpr double kHalfPi = 1.57079632679489661923;  // Uintah's phase shift pi/2
+  return (1 + IC) / 2 + (1 - IC) / 2 * std::sin(2 * theta - kHalfPi);
+}
+
+double ddt1_induction_angle(const Vec3& n, const Vec3& h, double& cos_theta) {
+  cos_theta = std::abs(n.dot(h)) / (h.norm() * n.norm());  // NaN for a zero vector, as Uintah's
+  if (cos_theta > 1) cos_theta = 1.0;
+  return std::acos(cos_theta);
+}
+
+double ddt1_induction_time(const Ddt1InductionParams& prm, double dx_mean, double A, double p) {
+  return dx_mean * A / ddt1_flame_speed(prm, p);
+}
+
 }  // namespace tephra

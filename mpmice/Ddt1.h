@@ -29,9 +29,48 @@
 //     both at most the cell's solid mass less V 1e-12 kg/m^3; heat Qc + Qg.
 // Vaango reads <Gcrack>, <nCrack>, <CrackVolThreshold> but does not use them
 // (its crack mass term is commented out); so does Tephra.
+//
+// <useInductionTime> (Uintah's DDT1::computeBurnLogic, read for the rule; the
+// flame-spread law of S. F. Son, "Flame spread across surfaces of PBX 9501"):
+// a deflagration cell must be exposed for an induction time before it burns.
+//   * surface flame speed S_f(p) = Fb (p/PS)^Fc  (<PreexpoConst> Fb [m/s],
+//     <PressureShift> PS [Pa], <ExponentialConst> Fc; p the gas pressure of
+//     the WSB rule);
+//   * tau_new = dx_mean A / S_f,  dx_mean = (dx + dy + dz)/3;
+//   * A = (1 + IC)/2 + (1 - IC)/2 sin(2 theta - pi/2)  (<IgnitionConst> IC):
+//     theta is the angle between the surface normal (corner-mass gradient)
+//     and the direction to the hot cell, cos theta = |n.h|/|h|: IC for a
+//     flame arriving along the normal (theta = 0), 1 along the surface;
+//   * tau relaxes per step, tau = 0.2 tau_new + 0.8 tau_old (tau = tau_new in
+//     the first step of the run, Uintah's sentinel delt_init + 1e-20); the
+//     exposure time counts up by dt; the cell burns once count >= tau, and
+//     keeps burning (tau and count carried) while it stays a burning cell. A
+//     cell that stops being exposed restarts from tau_old = count = 0.
+#include "core/base/Types.h"
+
 namespace tephra {
 
 enum class Ddt1Branch { None = 0, Detonating = 1, Conductive = 2, Convective = 3 };
+// Uintah's codes of the "burning" label (typeofBurning): 1 warming up (exposed,
+// induction time not reached), 2 conductive, 3 convective.
+constexpr double kDdt1WarmingUp = 1, kDdt1Conductive = 2, kDdt1Convective = 3;
+
+struct Ddt1InductionParams {
+  double IC = 0;  // <IgnitionConst>
+  double PS = 0;  // <PressureShift> [Pa]
+  double Fb = 0;  // <PreexpoConst> [m/s]
+  double Fc = 0;  // <ExponentialConst>
+};
+
+// Son's surface flame speed S_f = Fb (p/PS)^Fc [m/s].
+double ddt1_flame_speed(const Ddt1InductionParams& prm, double p);
+// The direction factor A(theta) = (1 + IC)/2 + (1 - IC)/2 sin(2 theta - pi/2).
+double ddt1_induction_factor(double IC, double theta);
+// theta = acos(min(|n.h|/(|n||h|), 1)) of the surface normal n and the
+// direction h to the hot cell; NaN when n or h is zero (Uintah's 0/0).
+double ddt1_induction_angle(const Vec3& n, const Vec3& h, double& cos_theta);
+// tau_new = dx_mean A / S_f(p) [s].
+double ddt1_induction_time(const Ddt1InductionParams& prm, double dx_mean, double A, double p);
 
 struct Ddt1Thresholds {
   double jwl_pressure = 0;    // <ThresholdPressureJWL> [Pa]

@@ -35,6 +35,7 @@
 #include <unordered_map>
 
 #include "core/base/Errors.h"
+#include "core/io/StateArchive.h"
 #include "core/deck/DeckNode.h"
 #include "core/grid/Loop.h"
 #include "core/parallel/Ranks.h"
@@ -59,10 +60,8 @@ struct MesoBurnParams {
 
 class MesoBurnModel final : public SolidBurnModel {
  public:
-  MesoBurnModel(const MesoBurnParams& prm, std::size_t reactant, std::size_t product, SourceLocation where)
-      : SolidBurnModel("MesoBurn", "MesoBurn", reactant, product, prm.wsb.Qc + prm.wsb.Qg, 0.0),
-        prm_(prm),
-        where_(std::move(where)) {}
+  MesoBurnModel(const MesoBurnParams& prm, std::size_t reactant, std::size_t product)
+      : SolidBurnModel("MesoBurn", "MesoBurn", reactant, product, prm.wsb.Qc + prm.wsb.Qg, 0.0), prm_(prm) {}
 
   void initialize(const Grid& grid, const std::vector<IceMaterialFields>& mats) override {
     SolidBurnModel::initialize(grid, mats);
@@ -71,12 +70,6 @@ class MesoBurnModel final : public SolidBurnModel {
   }
 
   void compute_sources(const IceModelInput& in, IceModelSources& out) override {
-    // A restart restores `ran_` = 1 from the checkpoint before the first step
-    // of this process: the clocks are not checkpointed (exit 3).
-    if (ran_ > 0 && steps_here_ == 0)
-      throw MissingFeature(where_, "MesoBurn: restarting a run (the particles' induction clocks are not checkpointed)");
-    ++steps_here_;
-    ran_ = 1;
     advance_clocks(in);
     for (CellScalars* f : {&burning_, &ts_}) f->fill(0.0);
     SolidBurnModel::compute_sources(in, out);
@@ -125,7 +118,31 @@ class MesoBurnModel final : public SolidBurnModel {
             {"totalHeatReleased", &burn_sums(), 1, 1},
             {"totalSurfaceArea", &area_sums_, 0, 1}};
   }
-  std::vector<std::pair<std::string, double*>> state_scalars() override { return {{"MesoBurn.ran", &ran_}}; }
+  // The clocks in the checkpoint: ids (ascending), tau and time_induced.
+  void save_arrays(StateArchive& a, const std::string& prefix) const override {
+    std::vector<long long> ids;
+    ids.reserve(clocks_.size());
+    for (const auto& [id, clock] : clocks_) ids.push_back(id);
+    std::sort(ids.begin(), ids.end());
+    std::vector<double> tau(ids.size()), t(ids.size());
+    for (std::size_t i = 0; i < ids.size(); ++i) {
+      const MesoClock& c = clocks_.at(ids[i]);
+      tau[i] = c.tau;
+      t[i] = c.time_induced;
+    }
+    a.put(prefix + "MesoBurn.clock_id", std::move(ids));
+    a.put(prefix + "MesoBurn.clock_tau", std::move(tau));
+    a.put(prefix + "MesoBurn.clock_time", std::move(t));
+  }
+  void load_arrays(const StateArchive& a, const std::string& prefix) override {
+    const std::vector<long long>& ids = a.ints(prefix + "MesoBurn.clock_id");
+    const std::vector<double>& tau = a.doubles(prefix + "MesoBurn.clock_tau");
+    const std::vector<double>& t = a.doubles(prefix + "MesoBurn.clock_time");
+    if (tau.size() != ids.size() || t.size() != ids.size())
+      throw RuntimeFailure("checkpoint: MesoBurn clock arrays of different lengths");
+    clocks_.clear();
+    for (std::size_t i = 0; i < ids.size(); ++i) clocks_[ids[i]] = MesoClock{tau[i], t[i]};
+  }
 
  protected:
   double burn_mass(const BurnCell& c) override {
@@ -161,14 +178,11 @@ class MesoBurnModel final : public SolidBurnModel {
   }
 
   MesoBurnParams prm_;
-  SourceLocation where_;  // the deck's <Model> (for the restart error)
   std::unordered_map<long long, MesoClock> clocks_;
   std::vector<BurnParticle> particles_;
   CellScalars induced_, induced_mass_, induction_time_;
   mutable CellScalars burning_, ts_;  // written by select_cell / burn_mass
   PatchSums area_sums_;
-  double ran_ = 0;  // 1 once a step ran (checkpointed: detects a restart)
-  int steps_here_ = 0;
 };
 
 }  // namespace
@@ -192,7 +206,7 @@ IceModelP make_meso_burn(const DeckNode& model, const IceSetup& setup) {
   prm.resolution = mp.number("resolution", 8);
   if (!(prm.resolution > 0)) model.require_child("resolution").fail("MesoBurn <resolution> must be > 0");
   mp.finish();
-  return std::make_shared<MesoBurnModel>(prm, r, p, model.location());
+  return std::make_shared<MesoBurnModel>(prm, r, p);
 }
 
 }  // namespace tephra

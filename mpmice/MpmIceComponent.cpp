@@ -76,6 +76,7 @@ void MpmIceComponent::advance(double t, double dt, int step) {
   StepRedo redo;
   redo.who = "MPMICE";
   redo.snapshot = [this]() -> std::function<void()> {
+    PhaseTimers::Scope timer(phase_timers(), "MPMICE: step-redo snapshot");
     auto start = std::make_shared<StateArchive>();
     save_state(*start);
     return [this, start] { load_state(*start); };
@@ -155,6 +156,9 @@ std::set<std::string> MpmIceComponent::known_labels() const {
 void MpmIceComponent::save_state(StateArchive& archive) const {
   mpm_->save_state(archive);
   ice_->save_state(archive);
+  for (std::size_t k = 0; k < ice_->models().size(); ++k)
+    if (auto* b = dynamic_cast<const SolidBurnModel*>(ice_->models()[k].get()))
+      b->save_arrays(archive, "mpmice.burn" + std::to_string(k) + ".");
 }
 
 // A restart on a fresh component (tephra --restart) first initializes both
@@ -164,6 +168,9 @@ void MpmIceComponent::load_state(const StateArchive& archive) {
   if (!initialized_) initialize();
   mpm_->load_state(archive);
   ice_->load_state(archive);
+  for (std::size_t k = 0; k < ice_->models().size(); ++k)
+    if (auto* b = dynamic_cast<SolidBurnModel*>(ice_->models()[k].get()))
+      b->load_arrays(archive, "mpmice.burn" + std::to_string(k) + ".");
 }
 
 }  // namespace tephra

@@ -66,6 +66,7 @@ class MpmIceComponent final : public Component, private MpmCoupling, private Sol
   void particles_per_cell(std::size_t s, CellScalars& out) const override;
   bool particle_history_max(std::size_t s, const std::string& name, CellScalars& out) const override;
   void reactant_particles(std::size_t s, std::vector<BurnParticle>& out) const override;
+  void exchange_cell_halo(CellScalars& f) override { ice_->exchange_halo(f); }
   // MPI ranks: burned cell shares of other ranks' cells to their owners (ParticleBurn.cpp).
   void send_burned_shares(const std::vector<int>& patch_of, std::vector<double>& mass, std::vector<Vec3>& momentum,
                           std::vector<double>& energy) const;

@@ -60,6 +60,7 @@ IceModelP make_ddt1(const DeckNode& model, const IceSetup& setup);           // 
 IceModelP make_ddt0(const DeckNode& model, const IceSetup& setup);           // Ddt0Model.cpp
 IceModelP make_test_model(const DeckNode& model, const IceSetup& setup);     // TestMassModel.cpp
 IceModelP make_solid_reaction_model(const DeckNode& model, const IceSetup& setup);  // SolidReactionModel.cpp
+IceModelP make_meso_burn(const DeckNode& model, const IceSetup& setup);      // MesoBurnModel.cpp
 
 IceModelFactories mpmice_burn_model_factories() {
   IceModelFactories f;
@@ -70,7 +71,7 @@ IceModelFactories mpmice_burn_model_factories() {
   f["DDT0"] = make_ddt0;
   f["Test"] = make_test_model;
   f["SolidReactionModel"] = make_solid_reaction_model;
-  // MesoBurn (MesoBurnModel.cpp) is built but not registered: exit 3 (docs/mpmice.md).
+  f["MesoBurn"] = make_meso_burn;
   return f;
 }
 

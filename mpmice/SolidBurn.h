@@ -20,6 +20,8 @@
 
 namespace tephra {
 
+class StateArchive;
+
 // One particle of a reactant as a burn model sees it at step 4 (start-of-step
 // mass and temperature; MesoBurn's per-particle induction clock).
 struct BurnParticle {
@@ -57,6 +59,9 @@ class SolidBurnSupport {
   // Solid s's particles in this process's interior cells (the cell rule of
   // particles_per_cell), in storage order.
   virtual void reactant_particles(std::size_t s, std::vector<BurnParticle>& out) const = 0;
+  // Fills the ghost cells of a model's cell field from the patches (and
+  // ranks) that own them, for a rule that reads a neighbour's value.
+  virtual void exchange_cell_halo(CellScalars& f) = 0;
 };
 
 // The cell a burn law sees.
@@ -105,6 +110,12 @@ class SolidBurnModel : public IceModel {
   // (DDT1's crack model: "crackRad"), "" if none; checked when the MPMICE
   // deck is read (mpmice/MpmIceDeck.cpp).
   virtual std::string required_particle_history() const { return ""; }
+  // Restart state that is neither a cell field nor a sum (MesoBurn's
+  // per-particle induction clocks), put into / read back from the checkpoint
+  // by MpmIceComponent::save_state / load_state (the MPMICE step-redo
+  // snapshot is the same archive), under names starting with `prefix`.
+  virtual void save_arrays(StateArchive& /*a*/, const std::string& /*prefix*/) const {}
+  virtual void load_arrays(const StateArchive& /*a*/, const std::string& /*prefix*/) {}
   const CellScalars& on_surface() const { return on_surface_; }       // burning area per cell of the last step
   const CellScalars& particles_per_cell_field() const { return ppc_; }  // reactant particles per cell of the last step
   double mass_burned_last_step() const { return total_burned_; }        // sum_c dm_c of the last step

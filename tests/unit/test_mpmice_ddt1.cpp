@@ -81,5 +81,51 @@ TEST(Ddt1Crack, WidthThresholdAndConvectiveArea) {
   EXPECT_DOUBLE_EQ(ddt1_convective_area(1e-9), 5e-7);  // V/2 mm
 }
 
+
+// <useInductionTime> (Uintah's DDT1; Son's surface flame spread):
+// S_f = Fb (p/PS)^Fc, A(theta) = (1 + IC)/2 + (1 - IC)/2 sin(2 theta - pi/2),
+// tau = dx_mean A/S_f.
+TEST(MpmIceDdt1Induction, FlameSpeedIsSonsPowerLaw) {
+  Ddt1InductionParams prm;
+  prm.Fb = 0.03, prm.PS = 1e5, prm.Fc = 0.8;
+  EXPECT_NEAR(ddt1_flame_speed(prm, 4e6), 0.03 * std::pow(40.0, 0.8), 1e-15);
+  EXPECT_DOUBLE_EQ(ddt1_flame_speed(prm, 1e5), 0.03);  // p = PS
+}
+
+TEST(MpmIceDdt1Induction, DirectionFactorRunsFromIcAlongTheNormalToOneAlongTheSurface) {
+  const double IC = 0.3, pi = std::acos(-1.0);
+  EXPECT_NEAR(ddt1_induction_factor(IC, 0.0), IC, 1e-15);         // sin(-pi/2) = -1
+  EXPECT_NEAR(ddt1_induction_factor(IC, pi / 2), 1.0, 1e-15);     // sin(pi/2) = 1
+  EXPECT_NEAR(ddt1_induction_factor(IC, pi / 4), (1 + IC) / 2, 1e-15);  // sin(0) = 0
+  // sin(2 theta - pi/2) = -cos(2 theta): A = (1 + IC)/2 - (1 - IC)/2 cos(2 theta).
+  for (double th = 0; th <= pi / 2; th += 0.1)
+    EXPECT_NEAR(ddt1_induction_factor(IC, th), (1 + IC) / 2 - (1 - IC) / 2 * std::cos(2 * th), 1e-15);
+}
+
+TEST(MpmIceDdt1Induction, AngleBetweenTheNormalAndTheHotCell) {
+  double c = 0;
+  const double pi = std::acos(-1.0);
+  // Hot cell straight along the normal (either sign: |n.h|): theta = 0.
+  EXPECT_NEAR(ddt1_induction_angle(Vec3(1, 0, 0), Vec3(-0.5, 0, 0), c), 0.0, 1e-8);
+  EXPECT_DOUBLE_EQ(c, 1.0);
+  // Beside the surface: 90 degrees.
+  EXPECT_NEAR(ddt1_induction_angle(Vec3(0, 0, 1), Vec3(0.5, 0, 0), c), pi / 2, 1e-15);
+  // Diagonal neighbour of a face normal: 45 degrees (cos = 1/sqrt 2).
+  EXPECT_NEAR(ddt1_induction_angle(Vec3(1, 0, 0), Vec3(0.5, 0.5, 0), c), pi / 4, 1e-15);
+  EXPECT_NEAR(c, 1 / std::sqrt(2.0), 1e-15);
+  // Cube-corner normal (1,1,1)/sqrt 3 and an edge neighbour (1,1,0): cos = 2/sqrt 6.
+  EXPECT_NEAR(ddt1_induction_angle(Vec3(1, 1, 1) / std::sqrt(3.0), Vec3(1, 1, 0), c), std::acos(2 / std::sqrt(6.0)), 1e-15);
+  // No gradient (inside the solid): NaN, as Uintah's 0/0 (no comparison takes it).
+  EXPECT_TRUE(std::isnan(ddt1_induction_angle(Vec3::Zero(), Vec3(1, 0, 0), c)));
+  EXPECT_FALSE(c > -1);
+}
+
+TEST(MpmIceDdt1Induction, InductionTimeIsTheCellCrossingTimeOfTheFlame) {
+  Ddt1InductionParams prm;
+  prm.Fb = 0.02, prm.PS = 101325, prm.Fc = 1.0;
+  // 1 mm cells, flame along the normal with IC = 0.5 at p = 10 PS: S_f = 0.2 m/s, tau = 1e-3 * 0.5 / 0.2.
+  EXPECT_NEAR(ddt1_induction_time(prm, 1e-3, ddt1_induction_factor(0.5, 0.0), 10 * 101325.0), 2.5e-3, 1e-17);
+}
+
 }  // namespace
 }  // namespace tephra

@@ -19,6 +19,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <string>
 
 #include "core/deck/DeckLoader.h"
@@ -55,6 +56,20 @@ std::string ddt1_model(const char* jwl_threshold) {
         <ThresholdPressureJWL> )") +
          jwl_threshold + "</ThresholdPressureJWL>\n<ThresholdPressureSB> 500 </ThresholdPressureSB>" + wsb_block() +
          "</Model></Models>";
+}
+
+// DDT1 with <useInductionTime>: S_f = Fb (p/PS)^Fc with PS = p_ref and
+// Fc = 1, IgnitionConst IC.
+std::string ddt1_induction_model(const char* Fb, const char* IC) {
+  return std::string(R"(<Models><Model type="DDT1">
+        <fromMaterial> reactant </fromMaterial>
+        <toMaterial>   product  </toMaterial>
+        <G> 2.33e-6 </G> <b> 1.2 </b> <E0> 5.0e6 </E0>
+        <ThresholdPressureJWL> 1e12 </ThresholdPressureJWL>
+        <ThresholdPressureSB> 500 </ThresholdPressureSB>
+        <useInductionTime> true </useInductionTime>
+        <IgnitionConst> )") + IC + "</IgnitionConst>\n<PressureShift> 101325 </PressureShift>\n<PreexpoConst> " + Fb +
+         "</PreexpoConst>\n<ExponentialConst> 1 </ExponentialConst>" + wsb_block() + "</Model></Models>";
 }
 
 std::string unsteady_model() {
@@ -225,6 +240,75 @@ TEST(MpmIceUnsteadyBurn, FreshSurfaceBurnsAtTheSteadyRateThenCountsItsSteps) {
 }
 
 TEST(MpmIceUnsteadyBurn, ConservesMassInAClosedBox) { expect_mass_conserved(unsteady_model(), 1e-4, "unsteady"); }
+
+
+// <useInductionTime> on massX (open faces as BelowTheJwlThreshold...). The
+// cube's 8 cells are ignited surface cells from step 1 (hot gas beside them);
+// each holds its own solid at 300 K > IgnitionTemp with theta > 0.2, so
+// Uintah's rule sets theta = 0 and A = IC: the induction time is
+//   tau = dx_mean IC / S_f,  S_f = Fb p/p_ref,
+// constant while nothing burns (p = p_ref, quiescent), and, started at
+// Uintah's first-step sentinel, tau_k = tau in every step (0.2 tau + 0.8 tau).
+// The exposure time after step k is k dt, so the first burning step is the
+// first k with k dt >= tau: with tau = 4.5 dt, steps 1-4 burn nothing (the
+// cells are "warming up", burning = 1, countTime = k dt) and step 5 burns what
+// step 1 burns without induction, 8 dt A m_WSB (the state is unchanged until
+// then: p and v_s of step 5 equal the initial ones to round-off).
+TEST(MpmIceDdt1, InductionTimeDelaysTheIgnitionByTau) {
+  set_thread_count(1);
+  const double dt = 1e-4, dx = 0.5, IC = 0.5, tau = 4.5 * dt;
+  const double Fb = dx * IC / tau;  // S_f at p = p_ref
+  char fb[64];
+  std::snprintf(fb, sizeof fb, "%.17g", Fb);
+  BurnRun r = make_run(ddt1_induction_model(fb, "0.5"), false);
+  ASSERT_NE(r.burn, nullptr);
+  const double expected = expected_step1_wsb_mass(r, dt);
+  const double p0 = r.c->ice().press_CC()[0](4, 4, 4);
+  const double mp0 = particle_mass(*r.c);
+  const CellScalars& burning = field(*r.burn, "burning");
+  const CellScalars& induction = field(*r.burn, "inductionTime");
+  const CellScalars& count = field(*r.burn, "countTime");
+  const double tau_p = dx * IC / (Fb * p0 / 101325.0);  // p0 = p_ref to round-off
+  for (int k = 1; k <= 4; ++k) {
+    r.c->advance((k - 1) * dt, dt, k);
+    EXPECT_EQ(r.burn->mass_burned_last_step(), 0.0) << "step " << k;
+    EXPECT_EQ(particle_mass(*r.c), mp0) << "step " << k;
+    for (int c = 0; c < 8; ++c) {
+      const IntVec3 cell(4 + (c & 1), 4 + ((c >> 1) & 1), 4 + ((c >> 2) & 1));
+      EXPECT_EQ(burning[0](cell), 1.0) << "warming up, step " << k;  // Uintah's WARMINGUP
+      // p of steps 1-4 equals p_ref to ~1e-12 (nothing burns, nothing moves).
+      EXPECT_NEAR(induction[0](cell), tau_p, 1e-10 * tau_p) << "step " << k;
+      EXPECT_NEAR(count[0](cell), k * dt, 1e-15) << "step " << k;
+    }
+  }
+  r.c->advance(4 * dt, dt, 5);
+  EXPECT_NEAR(r.burn->mass_burned_last_step(), expected, 1e-9 * expected);
+  EXPECT_NEAR(mp0 - particle_mass(*r.c), r.burn->mass_burned_last_step(), 1e-14 * mp0);
+  EXPECT_EQ(burning[0](4, 4, 4), 2.0);  // CONDUCTIVE
+  // Once burning the cell carries tau and counts on.
+  r.c->advance(5 * dt, dt, 6);
+  EXPECT_EQ(burning[0](4, 4, 4), 2.0);
+  EXPECT_NEAR(count[0](4, 4, 4), 6 * dt, 1e-15);
+  EXPECT_GT(r.burn->mass_burned_last_step(), 0.0);
+}
+
+// The same with IC = 1 (A = 1 for any angle) and tau = 2.5 dt: the first burn
+// comes at step 3.
+TEST(MpmIceDdt1, InductionTimeScalesWithTheIgnitionConstant) {
+  set_thread_count(1);
+  const double dt = 1e-4, dx = 0.5;
+  char fb[64];
+  std::snprintf(fb, sizeof fb, "%.17g", dx * 1.0 / (2.5 * dt));
+  BurnRun r = make_run(ddt1_induction_model(fb, "1"), false);
+  ASSERT_NE(r.burn, nullptr);
+  const double expected = expected_step1_wsb_mass(r, dt);
+  for (int k = 1; k <= 2; ++k) {
+    r.c->advance((k - 1) * dt, dt, k);
+    EXPECT_EQ(r.burn->mass_burned_last_step(), 0.0) << "step " << k;
+  }
+  r.c->advance(2 * dt, dt, 3);
+  EXPECT_NEAR(r.burn->mass_burned_last_step(), expected, 1e-9 * expected);
+}
 
 }  // namespace
 }  // namespace tephra
