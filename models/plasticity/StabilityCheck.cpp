@@ -118,12 +118,12 @@ bool becker_unstable(const BeckerQuadratic& q) {
   return q.a3 / q.a1 >= 0.0 && -q.a2 / q.a1 >= 0.0;
 }
 
+double drucker_product(const Tangent4& C, const Eigen::Matrix3d& D) { return C.contract(D).cwiseProduct(D).sum(); }
+
 namespace {
 
-bool drucker_unstable(const StabilityInput& in) {
-  if (in.plastic_strain_rate.squaredNorm() == 0.0) return false;  // elastic: the postulate holds
-  return in.stress_rate.cwiseProduct(in.plastic_strain_rate).sum() <= 0.0;
-}
+// (C : D) : D <= 0 (StabilityCheck.h; Vaango's DruckerCheck: stable only when > 0).
+bool drucker_unstable(const StabilityInput& in) { return drucker_product(in.tangent, in.deformation_rate) <= 0.0; }
 
 bool becker_check(const StabilityInput& in) {
   // Principal frame, columns ordered σ1 >= σ2 >= σ3 (Eigen sorts ascending).

@@ -2,7 +2,22 @@
 // Material-stability (loss of uniqueness / ellipticity) checks of the metal
 // models, VT ch. 16 (Vaango's <stability_check type="...">):
 //   none            never unstable;
-//   drucker         Drucker's postulate (16.2): unstable when σ̇ : d^p <= 0 (a plastic step only);
+//   drucker         Drucker's stability postulate in Vaango's rate form: unstable when
+//                     (C : D) : D <= 0,
+//                   C the continuum elasto-plastic tangent at the returned state and D the
+//                   step's TOTAL rate of deformation (Vaango: DruckerCheck::checkStability
+//                   contracts Cep with deformRate, stable only if the product is > 0; called by
+//                   ElasticPlastic(HP)::computeStressTensor only after a plastic step, with the
+//                   updated stress and the rate of deformation DD/tensorD, and a failed check sets
+//                   pLocalized; bbanerjee/ParSim, Vaango/.../PlasticityModels/DruckerCheck.cc).
+//                   VT eq. 16.2 prints σ̇ : d^p <= 0 with σ̇ the stress rate; Tephra's earlier
+//                   literal reading (σ̇ = the step's (τ - τ_n)/Δt) fired at first yield in
+//                   explicit runs whenever the flow stress fell within a step, and is gone.
+//                   For the J2 tangent below, with D = a n̂ + D'_⊥ + (tr D/3) I:
+//                     (C : D) : D = K (tr D)² + 2μ |D'_⊥|² + 2μ a² H/(3μ + H),
+//                   so hardening (H > 0) is always stable, softening is unstable when D'
+//                   lies close enough to the flow direction n̂ (test_plasticity_stability).
+//                   D = 0 in a plastic step gives 0: unstable, as in Vaango (<= 0).
 //   acoustic        loss of ellipticity (16.28): unstable when det A(n) <= 0 for some unit n,
 //                   A_jk(n) = n_i C_ijkl n_l (the acoustic tensor of the tangent C); searched
 //                   over a hemisphere grid, then refined around the grid minimum;
@@ -13,8 +28,14 @@
 //                            - (C1133 + C3131)(C3311 + C1313)) β + C1111 C1331;
 //                   unstable when q has two real non-negative roots β (four real n3/n1, 16.41);
 //                   two real roots (one β < 0) count as stable, as the manual says;
-//   drucker_becker  unstable when either check says so.
+//   drucker_becker  unstable when either check says so (Vaango's DruckerBeckerCheck: the
+//                   same (C : D) : D <= 0 first, then Becker).
 // C is the continuum (elasto-plastic) tangent σ̇ = C : d, stored as a full 3x3x3x3 array.
+// Vaango's von Mises tangent (VonMisesYield::computeElasPlasTangentModulus) differs from the
+// consistent one used here: with f = σ_eq² - σ_y² it takes ∂f/∂ε_p = H (not -2σ_y H), so its
+// denominator is 12μσ_y² - 2σ_y H instead of 4σ_y²(3μ + H): in practice the perfectly plastic
+// tangent. Tephra uses the consistent J2 tangent (VT 18.31-18.39) and the J2-I1 tangent of
+// ContinuumTangent.h for porous yields.
 #include <array>
 #include <memory>
 #include <string>
@@ -58,11 +79,13 @@ BeckerQuadratic becker_quadratic(const Tangent4& C_principal);
 bool becker_unstable(const BeckerQuadratic& q);
 
 struct StabilityInput {
-  Eigen::Matrix3d stress = Eigen::Matrix3d::Zero();          // Cauchy stress (principal frame from it)
-  Eigen::Matrix3d stress_rate = Eigen::Matrix3d::Zero();     // σ̇ (unrotated frame)
-  Eigen::Matrix3d plastic_strain_rate = Eigen::Matrix3d::Zero();  // d^p
-  Tangent4 tangent;                                          // C (same frame as stress)
+  Eigen::Matrix3d stress = Eigen::Matrix3d::Zero();            // Cauchy stress (principal frame from it)
+  Eigen::Matrix3d deformation_rate = Eigen::Matrix3d::Zero();  // D, the total rate of deformation
+  Tangent4 tangent;                                            // C (stress, D and C in one frame)
 };
+
+// Drucker's product (C : D) : D (Vaango's DruckerCheck); unstable when <= 0.
+double drucker_product(const Tangent4& C, const Eigen::Matrix3d& D);
 
 class StabilityCheck {
  public:

@@ -179,7 +179,6 @@ bool ElasticPlastic::update_point(const Eigen::Matrix3d& F_old, const Eigen::Mat
   double delta = 0.0, sigma_y = 0.0, T_new = T, H = 0.0, work = 0.0, tr_dp = 0.0;
   Eigen::Matrix3d xi = s_trial;  // the returned stress relative to the backstress (flow direction)
   std::optional<Tangent4> porous_tangent;  // porous yield with a stability check only
-  Eigen::Matrix3d porous_dp = Eigen::Matrix3d::Zero();
   bool melted = false, plastic = false;
 
   // Mechanical mean stress (VT eq. 18.81 without the thermal term): the EOS at J^e = J/J^p
@@ -231,7 +230,6 @@ bool ElasticPlastic::update_point(const Eigen::Matrix3d& F_old, const Eigen::Mat
         T_new = T + c * work;
         if (kin_) Eigen::Map<Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(hist + k_beta_) = r.backstress;
         if (has_stability_check(failure_)) {  // the J2-I1 continuum tangent (VT §18.6.2) at the returned state
-          porous_dp = r.plastic_strain;
           porous_tangent = yield_continuum_tangent(*yield_, r.xi, r.sigma_y, r.hardening, st.porosity, kappa, mu,
                                                    kin_.get(), r.backstress);
         }
@@ -297,8 +295,8 @@ bool ElasticPlastic::update_point(const Eigen::Matrix3d& F_old, const Eigen::Mat
   }
   if (dt > 0.0 && metal_point_failed(failure_, melted, plastic, hist[kPorosity], hist[kDamage], out.r.stress))
     hist[kLocalized] = 1.0;
-  if (plastic && (porous_tangent ? metal_point_unstable(failure_, tau_n, tau, porous_dp, dt, *porous_tangent)
-                                 : metal_point_unstable(failure_, tau_n, tau, xi, delta, dt, kappa, mu, H)))
+  if (plastic && (porous_tangent ? metal_point_unstable(failure_, de, tau, dt, *porous_tangent)
+                                 : metal_point_unstable(failure_, de, tau, xi, dt, kappa, mu, H)))
     hist[kLocalized] = 1.0;
   return out.r.stress.allFinite() && std::isfinite(out.heating) && std::isfinite(hist[kDamage]);
 }

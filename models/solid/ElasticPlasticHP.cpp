@@ -104,7 +104,6 @@ bool ElasticPlasticHP::update_point(const Eigen::Matrix3d& F_old, const Eigen::M
   double delta = 0.0, H = 0.0, mean = eos.p - p_th, work = 0.0, tr_dp = 0.0;
   Eigen::Matrix3d xi = s_trial;  // returned stress relative to the backstress (flow direction of the tangent)
   std::optional<Tangent4> porous_tangent;  // porous yield with a stability check only
-  Eigen::Matrix3d porous_dp = Eigen::Matrix3d::Zero();
   const bool melted = p_.do_melting && T >= st.melt_temperature;
   if (melted) {
     s.setZero();
@@ -138,7 +137,6 @@ bool ElasticPlasticHP::update_point(const Eigen::Matrix3d& F_old, const Eigen::M
       work = r.stress.cwiseProduct(r.plastic_strain).sum();  // σ : Δε^p = (1 - φ) σ_y Δε_p (+ β : Δε^p)
       if (kin_) Eigen::Map<Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(hist + k_beta_) = r.backstress;
       if (has_stability_check(failure_)) {  // the J2-I1 continuum tangent (VT §18.6.2) at the returned state
-        porous_dp = r.plastic_strain;
         porous_tangent = yield_continuum_tangent(*yield_, r.xi, r.sigma_y, r.hardening, st.porosity, pr.K, mu,
                                                  kin_.get(), r.backstress);
       }
@@ -227,8 +225,8 @@ bool ElasticPlasticHP::update_point(const Eigen::Matrix3d& F_old, const Eigen::M
   }
   if (dt > 0.0 && metal_point_failed(failure_, melted, delta > 0.0, hist[kPorosity], hist[kDamage], out.r.stress))
     hist[kLocalized] = 1.0;
-  if (delta > 0.0 && (porous_tangent ? metal_point_unstable(failure_, tau_n, tau, porous_dp, dt, *porous_tangent)
-                                     : metal_point_unstable(failure_, tau_n, tau, xi, delta, dt, kappa, mu, H)))
+  if (delta > 0.0 && (porous_tangent ? metal_point_unstable(failure_, de, tau, dt, *porous_tangent)
+                                     : metal_point_unstable(failure_, de, tau, xi, dt, kappa, mu, H)))
     hist[kLocalized] = 1.0;
   return out.r.stress.allFinite() && std::isfinite(out.heating) && std::isfinite(hist[kDamage]);
 }

@@ -99,24 +99,20 @@ void evolve_porosity_and_damage(const MetalFailureParams& f, const Eigen::Matrix
   if (f.evolve_damage && f.damage) damage += dt * f.damage->damage_rate(stress, st);
 }
 
-bool metal_point_unstable(const MetalFailureParams& f, const Eigen::Matrix3d& tau_n, const Eigen::Matrix3d& tau,
-                          const Eigen::Matrix3d& s, double delta_gamma, double dt, double K, double mu, double H) {
-  if (!f.stability || f.stability->type() == "none" || !(dt > 0.0) || !(delta_gamma > 0.0)) return false;
-  const double ns = s.norm();
-  if (!(ns > 0.0)) return false;
-  const Eigen::Matrix3d n_hat = s / ns;
-  // d^p = gamma_dot r, r = sqrt(3/2) n_hat
-  return metal_point_unstable(f, tau_n, tau, delta_gamma * std::sqrt(1.5) * n_hat, dt,
-                              j2_elastoplastic_tangent(K, mu, H, n_hat));
+bool metal_point_unstable(const MetalFailureParams& f, const Eigen::Matrix3d& de, const Eigen::Matrix3d& tau,
+                          const Eigen::Matrix3d& xi, double dt, double K, double mu, double H) {
+  if (!has_stability_check(f) || !(dt > 0.0)) return false;
+  const double nx = xi.norm();
+  if (!(nx > 0.0)) return false;
+  return metal_point_unstable(f, de, tau, dt, j2_elastoplastic_tangent(K, mu, H, xi / nx));
 }
 
-bool metal_point_unstable(const MetalFailureParams& f, const Eigen::Matrix3d& tau_n, const Eigen::Matrix3d& tau,
-                          const Eigen::Matrix3d& delta_eps_p, double dt, const Tangent4& C) {
+bool metal_point_unstable(const MetalFailureParams& f, const Eigen::Matrix3d& de, const Eigen::Matrix3d& tau,
+                          double dt, const Tangent4& C) {
   if (!has_stability_check(f) || !(dt > 0.0)) return false;
   StabilityInput in;
   in.stress = tau;
-  in.stress_rate = (tau - tau_n) / dt;
-  in.plastic_strain_rate = delta_eps_p / dt;
+  in.deformation_rate = de / dt;
   in.tangent = C;
   return f.stability->unstable(in);
 }

@@ -88,17 +88,18 @@ double void_nucleation_factor(const MetalFailureParams& f, double eps_p);
 void evolve_porosity_and_damage(const MetalFailureParams& f, const Eigen::Matrix3d& stress, const PlasticState& st,
                                 double dt, double& porosity, double& damage, double trace_dp = 0.0);
 
-// The stability check of a plastic J2 step (VT ch. 16), in the unrotated frame:
-// tau_n, tau the stresses at t_n and t_{n+1}; s the flow direction at t_{n+1}: the deviator
-// relative to the backstress xi = s - beta (the deviator without kinematic hardening); Dg the
-// increment of eps_p (d^p = Dg sqrt(3/2) xi/|xi| / dt); K, mu the moduli; H the total (isotropic
-// + kinematic) hardening modulus of the continuum tangent (models/plasticity/StabilityCheck.h).
-bool metal_point_unstable(const MetalFailureParams& f, const Eigen::Matrix3d& tau_n, const Eigen::Matrix3d& tau,
-                          const Eigen::Matrix3d& s, double delta_gamma, double dt, double K, double mu, double H);
+// The stability check of a plastic J2 step (VT ch. 16; Vaango's ElasticPlastic(HP) Check 3:
+// after a plastic step only), in the unrotated frame: de the step's total strain increment
+// (D = de/dt, the rate of deformation), tau the stress at t_{n+1}; xi the flow direction at
+// t_{n+1}: the deviator relative to the backstress xi = s - beta (the deviator without kinematic
+// hardening); K, mu the moduli; H the total (isotropic + kinematic) hardening modulus of the
+// continuum tangent (models/plasticity/StabilityCheck.h). Unstable: (C^ep : D) : D <= 0 (drucker).
+bool metal_point_unstable(const MetalFailureParams& f, const Eigen::Matrix3d& de, const Eigen::Matrix3d& tau,
+                          const Eigen::Matrix3d& xi, double dt, double K, double mu, double H);
 // The same with a given continuum tangent C (a porous yield: the J2-I1 tangent of
-// models/plasticity/ContinuumTangent.h) and the step's plastic strain increment (d^p = Δε^p/dt).
-bool metal_point_unstable(const MetalFailureParams& f, const Eigen::Matrix3d& tau_n, const Eigen::Matrix3d& tau,
-                          const Eigen::Matrix3d& delta_eps_p, double dt, const Tangent4& C);
+// models/plasticity/ContinuumTangent.h).
+bool metal_point_unstable(const MetalFailureParams& f, const Eigen::Matrix3d& de, const Eigen::Matrix3d& tau,
+                          double dt, const Tangent4& C);
 // Whether a stability check is configured (the porous branches build their tangent only then).
 inline bool has_stability_check(const MetalFailureParams& f) { return f.stability && f.stability->type() != "none"; }
 

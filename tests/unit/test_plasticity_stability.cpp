@@ -1,6 +1,7 @@
 // Stability checks (VT ch. 16; models/plasticity/StabilityCheck.h): the corrected
 // Becker quadratic on an elastic tangent, the acoustic-tensor determinant of the
-// J2 tangent against a hand computation, and the checks driving the failure flag
+// J2 tangent against a hand computation, Drucker's (C : D) : D against its closed
+// form, and the checks driving the failure flag
 // of elastic_plastic and elastic_plastic_hp (softening flagged, hardening not).
 #include <cmath>
 #include <stdexcept>
@@ -71,10 +72,9 @@ TEST(StabilityCheck, AcousticDeterminantOfTheJ2TangentAgainstTheHandComputation)
     StabilityInput in;
     in.stress = stress;
     in.tangent = C;
-    in.plastic_strain_rate = Nh;                    // d^p along Nh
-    in.stress_rate = C.contract(Nh);                // sigma_dot = C^ep : d with d = Nh
-    // sigma_dot : d^p = 2 mu H/(3 mu + H) (Nh:Nh = 1): the sign of H.
-    EXPECT_NEAR(in.stress_rate.cwiseProduct(Nh).sum(), 2 * kMu * H / (3 * kMu + H), 1e-6 * kMu);
+    in.deformation_rate = Nh;  // D along the flow direction
+    // (C^ep : D) : D = 2 mu H/(3 mu + H) (Nh:Nh = 1): the sign of H.
+    EXPECT_NEAR(drucker_product(C, Nh), 2 * kMu * H / (3 * kMu + H), 1e-6 * kMu);
     const bool soft = H < 0;
     for (const char* key : {"drucker", "acoustic", "becker", "drucker_becker"}) {
       const auto chk = create_stability_check(key, MapModelParameters{});
@@ -84,6 +84,90 @@ TEST(StabilityCheck, AcousticDeterminantOfTheJ2TangentAgainstTheHandComputation)
     EXPECT_FALSE(create_stability_check("none", MapModelParameters{})->unstable(in));
   }
   EXPECT_EQ(create_stability_check("no_such_check", MapModelParameters{}), nullptr);
+}
+
+// Drucker's check in Vaango's form, (C^ep : D) : D <= 0 (StabilityCheck.h, DruckerCheck.cc),
+// on the J2 tangent C^ep = K I⊗I + 2mu I_dev - (2mu)^2/(2mu + 2H/3) N⊗N (|N| = 1, tr N = 0;
+// (2mu)^2/(2mu + 2H/3) = 6 mu^2/(3 mu + H)). With D = a N + b M + (e/3) I (|M| = 1, M:N = 0,
+// tr M = 0):  C^ep:D = K e I + 2mu (a N + b M) - 6 mu^2 a/(3 mu + H) N, so
+//   (C^ep : D) : D = K e^2 + 2 mu b^2 + 2 mu a^2 H/(3 mu + H).
+// Hardening (H > 0) is positive for every D != 0; softening (-3 mu < H < 0) is <= 0 exactly
+// when K e^2 + 2 mu b^2 <= 2 mu a^2 |H|/(3 mu + H): for e = 0, (b/a)^2 <= -H/(3 mu + H).
+Eigen::Matrix3d flow_direction() {  // N = dev(diag(2, -1, -1))/|.| = diag(2, -1, -1)/sqrt(6)
+  return Eigen::Vector3d(2.0, -1.0, -1.0).asDiagonal() * (1.0 / std::sqrt(6.0));
+}
+Eigen::Matrix3d orthogonal_direction() {  // M = (e1 e2 + e2 e1)/sqrt(2): M:N = 0, tr M = 0
+  Eigen::Matrix3d M = Eigen::Matrix3d::Zero();
+  M(0, 1) = M(1, 0) = 1.0 / std::sqrt(2.0);
+  return M;
+}
+
+StabilityInput drucker_input(double H, const Eigen::Matrix3d& D) {
+  StabilityInput in;
+  in.stress = 3e8 * flow_direction();  // deviatoric stress along N
+  in.deformation_rate = D;
+  in.tangent = j2_elastoplastic_tangent(kK, kMu, H, flow_direction());
+  return in;
+}
+
+TEST(StabilityCheck, DruckerProductOfTheJ2TangentMatchesTheClosedForm) {
+  const Eigen::Matrix3d N = flow_direction(), M = orthogonal_direction(), I = Eigen::Matrix3d::Identity();
+  for (const double H : {-0.3 * kMu, -1e-3 * kMu, 0.0, 2e-3 * kMu, 0.4 * kMu})
+    for (const double a : {1.0, -0.7})
+      for (const double b : {0.0, 0.05, -0.3})
+        for (const double e : {0.0, 0.02}) {
+          const Eigen::Matrix3d D = a * N + b * M + (e / 3.0) * I;
+          const double closed = kK * e * e + 2 * kMu * b * b + 2 * kMu * a * a * H / (3 * kMu + H);
+          EXPECT_NEAR(drucker_product(j2_elastoplastic_tangent(kK, kMu, H, N), D), closed, 1e-12 * kK)
+              << "H " << H << " a " << a << " b " << b << " e " << e;
+        }
+}
+
+TEST(StabilityCheck, DruckerHardeningJ2TangentIsStableForEveryD) {
+  const auto chk = create_stability_check("drucker", MapModelParameters{});
+  ASSERT_TRUE(chk);
+  // Random directions, and the worst one (D = N: product 2 mu H/(3 mu + H) > 0).
+  for (const double H : {1e-4 * kMu, 0.1 * kMu, 2.0 * kMu}) {
+    EXPECT_FALSE(chk->unstable(drucker_input(H, flow_direction()))) << "H " << H;
+    for (int k = 0; k < 200; ++k) {
+      const Eigen::Matrix3d R = Eigen::Matrix3d::Random();
+      EXPECT_FALSE(chk->unstable(drucker_input(H, R + R.transpose()))) << "H " << H << " sample " << k;
+    }
+  }
+}
+
+TEST(StabilityCheck, DruckerSofteningJ2TangentThresholdAlongTheFlowDirection) {
+  const auto drucker = create_stability_check("drucker", MapModelParameters{});
+  const auto both = create_stability_check("drucker_becker", MapModelParameters{});
+  const Eigen::Matrix3d N = flow_direction(), M = orthogonal_direction();
+  for (const double H : {-0.05 * kMu, -0.5 * kMu}) {
+    // Threshold (b/a)^2 = -H/(3 mu + H) with a = 1, e = 0 (closed form above).
+    const double b_star = std::sqrt(-H / (3 * kMu + H));
+    EXPECT_TRUE(drucker->unstable(drucker_input(H, N))) << "H " << H;
+    EXPECT_TRUE(drucker->unstable(drucker_input(H, N + 0.99 * b_star * M))) << "H " << H;
+    EXPECT_FALSE(drucker->unstable(drucker_input(H, N + 1.01 * b_star * M))) << "H " << H;
+    EXPECT_TRUE(both->unstable(drucker_input(H, N + 0.99 * b_star * M))) << "H " << H;
+    // A volumetric part stabilises: K e^2 > 2 mu |H|/(3 mu + H) with a = 1, b = 0.
+    const double e_star = std::sqrt(2 * kMu * -H / ((3 * kMu + H) * kK));
+    EXPECT_TRUE(drucker->unstable(drucker_input(H, N + (0.99 * e_star / 3.0) * Eigen::Matrix3d::Identity())));
+    EXPECT_FALSE(drucker->unstable(drucker_input(H, N + (1.01 * e_star / 3.0) * Eigen::Matrix3d::Identity())));
+  }
+}
+
+// The elastic tangent: (C^e : D) : D = K (tr D)^2 + 2 mu |dev D|^2 > 0 for D != 0: stable.
+TEST(StabilityCheck, DruckerElasticStateIsStable) {
+  const auto chk = create_stability_check("drucker", MapModelParameters{});
+  const Tangent4 Ce = isotropic_tangent(kLambda, kMu);
+  for (int k = 0; k < 200; ++k) {
+    const Eigen::Matrix3d R = Eigen::Matrix3d::Random();
+    StabilityInput in;
+    in.deformation_rate = R + R.transpose();
+    in.tangent = Ce;
+    const Eigen::Matrix3d dev = in.deformation_rate - (in.deformation_rate.trace() / 3.0) * Eigen::Matrix3d::Identity();
+    EXPECT_NEAR(drucker_product(Ce, in.deformation_rate),
+                kK * std::pow(in.deformation_rate.trace(), 2) + 2 * kMu * dev.squaredNorm(), 1e-12 * kK);
+    EXPECT_FALSE(chk->unstable(in)) << "sample " << k;
+  }
 }
 
 // Through the composed models: isochoric plane strain F = diag(e^e, 1, e^-e) with
