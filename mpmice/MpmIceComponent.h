@@ -19,6 +19,7 @@
 namespace tephra {
 
 struct Deck;
+struct MpmIceNodeWeights;  // MpmIceTransfers.cpp
 
 class MpmIceComponent final : public Component, private MpmCoupling, private SolidBurnSupport {
  public:
@@ -84,6 +85,13 @@ class MpmIceComponent final : public Component, private MpmCoupling, private Sol
   Particles flux_particles_;  // scratch of solid_mass_fluxes
   NodeGrid flux_grid_;
   NodeGrid burn_grid_;
+  // Scratch of the transfers kept across steps (MpmIceTransfers.cpp): the
+  // node weights of each solid (fixed grid and symmetry faces), sum m T at
+  // the nodes, the solid's cell changes du, dT.
+  std::vector<std::shared_ptr<const MpmIceNodeWeights>> node_weights_;
+  std::vector<double> node_mT_;
+  CellVectors change_du_;
+  CellScalars change_dT_;
   // The step-redo snapshot's buffers, kept across steps (advance(); one
   // snapshot is live at a time, core/sim/StepRedo.cpp).
   MpmComponent::StepStart mpm_start_;
