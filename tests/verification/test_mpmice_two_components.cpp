@@ -2,9 +2,11 @@
 // step alternately (A, B, A, B, ...) each must give the same bits as one
 // component advanced alone. Any state kept per process (a static or
 // thread_local cache that carries a value from one component's call to the
-// other's) breaks this. Session 18 found every array differing after 8
-// alternated steps of massX (docs/mpmice.md "MesoBurn"); the cause and the fix
-// are in docs/mpmice.md "Two components in one process".
+// other's) breaks this; with two different components (grid, dt, models)
+// such a cache would hand one component the other's values. Session 18
+// reported every array differing after 8 alternated steps (docs/mpmice.md
+// "DDT0, Test, SolidReactionModel, MesoBurn"); session 19 could not
+// reproduce it on this code (these cases pass; see that section).
 //
 // Oracle: the whole restart state (save_state: particles, nodes, cells of
 // every material, model state) of each alternated component against the
