@@ -63,9 +63,9 @@ double MpmIceComponent::stable_timestep() const {
 // models, a phase that cannot complete the step (the implicit solve: outer
 // iterations past iters_before_timestep_restart or a linear solve short of
 // its tolerance; a non-positive Lagrangian specific volume of a fluid) throws
-// StepRedoRequest. The whole coupled step is then put back to its start (the
-// checkpoint arrays of both parts, save_state/load_state, which continue a
-// run bit for bit) and [t, t + dt] is run as two coupled steps of dt/2
+// StepRedoRequest. The whole coupled step is then put back to its start
+// (save_step_start / restore_step_start below: what the step reads before it
+// writes it) and [t, t + dt] is run as two coupled steps of dt/2
 // (Uintah's MPMICE::recomputeDelT halves delT), at most kMaxStepHalvings
 // deep, then NumericalFailure (exit 4) naming the step, the cell and the why.
 void MpmIceComponent::advance(double t, double dt, int step) {
