@@ -55,6 +55,25 @@ class IceComponent final : public Component {
   // and how many steps were redone with half the time step.
   int last_outer_iterations() const { return last_outer_iterations_; }
   int step_restarts() const { return step_restarts_; }
+  // The state a failed step attempt must put back (core/sim/StepRedo.h):
+  // what the step reads before it writes it -- p_CC (the equilibration's
+  // starting guess), rho, u, T, v of every material and the models' state.
+  // The other cell fields (p_eq, delP, rho_micro, theta, c, the L_ME
+  // copies) are written before they are read in every step. The buffers are
+  // kept by the caller across steps: after the first step a save copies into
+  // the same storage (no allocation). with_lagrangian = false leaves out the
+  // MPMICE solids, whose rho, u, T, v every coupled step rewrites from the
+  // particles first (MpmIceComponent::solid_state_to_cells).
+  struct StepStart {
+    std::vector<CellScalars> rho, temp, spv;
+    std::vector<CellVectors> vel;
+    CellScalars press;
+    std::vector<CellScalars> model_fields;
+    std::vector<double> model_scalars;
+    std::vector<PatchSums> model_sums;
+  };
+  void save_step_start(StepStart& s, bool with_lagrangian) const;
+  void restore_step_start(const StepStart& s);
   // Implicit pressure or source models: a step that cannot be completed
   // (StepRedoRequest, core/sim/StepRedo.h) is redone with dt/2 (valid after initialize()).
   bool redoes_failed_steps() const { return setup_.implicit.enabled || model_src_ != nullptr; }
@@ -72,6 +91,11 @@ class IceComponent final : public Component {
   // largest |residual| of that iterate.
   using OuterIterationHook = std::function<void(IceComponent&, double dt, int step, int outer)>;
   void set_outer_iteration_hook(OuterIterationHook hook) { outer_hook_ = std::move(hook); }
+  // Tests: called at the Lagrangian specific-volume check (the last place a
+  // step can ask for a redo, IceStep.cpp) with the step's start time and dt;
+  // may throw StepRedoRequest as a bad cell would.
+  using RedoCheckHook = std::function<void(double t, double dt)>;
+  void set_redo_check_hook(RedoCheckHook hook) { redo_check_hook_ = std::move(hook); }
   const IntVec3& max_residual_cell() const { return max_rhs_cell_; }
 
   // ---- MPMICE hooks (mpmice/MpmIceComponent.cpp). Materials with
@@ -150,6 +174,7 @@ class IceComponent final : public Component {
   void advance_one(double dt, int step);
   void advance_with_restarts(double t, double dt, int step);  // core/sim/StepRedo.h
   std::function<void()> step_snapshot();  // the state a failed attempt puts back; returns the restore
+  StepStart redo_start_;                   // its buffers (one snapshot is live at a time: StepRedo.cpp)
   void implicit_pressure_solve(double dt, int step);
   void assemble_pressure_matrix(double dt);
   double pressure_residual(double dt);  // fills rhs_, returns max |rhs| (its cell: max_rhs_cell_)
@@ -230,6 +255,7 @@ class IceComponent final : public Component {
   int last_outer_iterations_ = 0, step_restarts_ = 0;
   IntVec3 max_rhs_cell_ = IntVec3::Zero();
   OuterIterationHook outer_hook_;
+  RedoCheckHook redo_check_hook_;
   // Source models: per-step sources (null without models), delP_MassX, the
   // Lagrangian value of a model scalar, and the time at the start of the step.
   std::unique_ptr<IceModelSources> model_src_;

@@ -556,6 +556,7 @@ void IceComponent::lagrangian_values_and_exchange(double dt) {
           why = os.str();
         });
     }
+    if (redo_check_hook_) redo_check_hook_(time_, dt);
     if (layout_.any(!why.empty())) {
       if (why.empty()) why = "a bad Lagrangian specific volume on another MPI rank";
       // ICE alone and MPMICE (the whole coupled step) redo the step with dt/2.

@@ -66,35 +66,8 @@ namespace tephra {
 // recomputed from it): the cell state, the pressure (the next Newton start),
 // and the source models' carried fields, scalars and sums.
 std::function<void()> IceComponent::step_snapshot() {
-  std::vector<CellScalars> rho, temp, spv;
-  std::vector<CellVectors> vel;
-  for (const IceMaterialFields& f : mats_) {
-    rho.push_back(f.rho_CC);
-    temp.push_back(f.temp_CC);
-    spv.push_back(f.sp_vol_CC);
-    vel.push_back(f.vel_CC);
-  }
-  std::vector<std::pair<CellScalars*, CellScalars>> fields;
-  std::vector<std::pair<double*, double>> scalars;
-  std::vector<std::pair<PatchSums*, PatchSums>> sums;
-  for (const IceModelP& m : setup_.models) {
-    for (auto& [name, f] : m->state_fields()) fields.emplace_back(f, *f);
-    for (auto& [name, v] : m->state_scalars()) scalars.emplace_back(v, *v);
-    for (auto& [name, s] : m->state_sums()) sums.emplace_back(s, *s);
-  }
-  return [this, rho = std::move(rho), temp = std::move(temp), spv = std::move(spv), vel = std::move(vel),
-          press = press_CC_, fields = std::move(fields), scalars = std::move(scalars), sums = std::move(sums)]() {
-    for (std::size_t m = 0; m < mats_.size(); ++m) {
-      mats_[m].rho_CC = rho[m];
-      mats_[m].temp_CC = temp[m];
-      mats_[m].sp_vol_CC = spv[m];
-      mats_[m].vel_CC = vel[m];
-    }
-    press_CC_ = press;
-    for (const auto& [f, v] : fields) *f = v;
-    for (const auto& [d, v] : scalars) *d = v;
-    for (const auto& [s, v] : sums) *s = v;
-  };
+  save_step_start(redo_start_, true);
+  return [this] { restore_step_start(redo_start_); };
 }
 
 // core/sim/StepRedo.h: the interval [t, t + dt] as one step, or (after a

@@ -98,6 +98,20 @@ class MpmComponent final : public Component {
   std::set<std::string> known_labels() const override;
   void save_state(StateArchive& archive) const override;
   void load_state(const StateArchive& archive) override;
+  // The start of a step for a redo (MPMICE, core/sim/StepRedo.h;
+  // mpm/MpmStepStart.cpp): every particle column of this process and the
+  // run totals. The node arrays are not kept: every step resets them before
+  // it reads them (NodeGrid::reset in P2G). Buffers kept by the caller: after
+  // the first step a save copies into the same storage.
+  struct StepStart {
+    std::vector<Particles> particles;
+    double time = 0, acc_strain_energy = 0, plastic_work = 0, deleted_mass = 0;
+    EnergyLedger ledger;
+    std::array<Vec3, 6> boundary_force{};
+    std::array<double, 6> boundary_area{};
+  };
+  void save_step_start(StepStart& s) const;
+  void restore_step_start(const StepStart& s);
 
   const Grid& grid() const { return setup_.grid; }
   // L2 displacement error against the manufactured solution of each material

@@ -63,9 +63,9 @@ double MpmIceComponent::stable_timestep() const {
 // models, a phase that cannot complete the step (the implicit solve: outer
 // iterations past iters_before_timestep_restart or a linear solve short of
 // its tolerance; a non-positive Lagrangian specific volume of a fluid) throws
-// StepRedoRequest. The whole coupled step is then put back to its start (the
-// checkpoint arrays of both parts, save_state/load_state, which continue a
-// run bit for bit) and [t, t + dt] is run as two coupled steps of dt/2
+// StepRedoRequest. The whole coupled step is then put back to its start
+// (save_step_start / restore_step_start below: what the step reads before it
+// writes it) and [t, t + dt] is run as two coupled steps of dt/2
 // (Uintah's MPMICE::recomputeDelT halves delT), at most kMaxStepHalvings
 // deep, then NumericalFailure (exit 4) naming the step, the cell and the why.
 void MpmIceComponent::advance(double t, double dt, int step) {
@@ -77,9 +77,8 @@ void MpmIceComponent::advance(double t, double dt, int step) {
   redo.who = "MPMICE";
   redo.snapshot = [this]() -> std::function<void()> {
     PhaseTimers::Scope timer(phase_timers(), "MPMICE: step-redo snapshot");
-    auto start = std::make_shared<StateArchive>();
-    save_state(*start);
-    return [this, start] { load_state(*start); };
+    save_step_start();
+    return [this] { restore_step_start(); };
   };
   redo.attempt = [this, step](double t0, double h) { mpm_->advance(t0, h, step); };
   try {
@@ -89,6 +88,34 @@ void MpmIceComponent::advance(double t, double dt, int step) {
     throw;
   }
   step_redos_ += redo.redos;
+}
+
+// What a redone step must put back (session 19; before, the whole restart
+// archive, save_state, ~20 MB of fresh vectors per step on JWLppCuRS2d):
+// MPM's particle columns and run totals (MpmComponent::StepStart; the node
+// arrays are reset by P2G before any read), ICE's fluid state, pressure and
+// model state (IceComponent::StepStart; the solids' cell state is left out:
+// solid_state_to_cells rewrites it from the particles first in every step,
+// in every cell with its extra cells, and the ghosts by exchange), and the
+// burn models' arrays. The other members this class writes in a step
+// (particle_pressure_, node_temperature_, the flux and burn scratch grids)
+// are written before they are read. Copies into buffers kept across steps.
+// Proof: test_mpmice_implicit and test_mpmice_redo (forced redos, the
+// state bit-equal to the run that took the two dt/2 steps).
+void MpmIceComponent::save_step_start() {
+  mpm_->save_step_start(mpm_start_);
+  ice_->save_step_start(ice_start_, false);
+  for (std::size_t k = 0; k < ice_->models().size(); ++k)
+    if (auto* b = dynamic_cast<const SolidBurnModel*>(ice_->models()[k].get()))
+      b->save_arrays(burn_start_, "mpmice.burn" + std::to_string(k) + ".");
+}
+
+void MpmIceComponent::restore_step_start() {
+  mpm_->restore_step_start(mpm_start_);
+  ice_->restore_step_start(ice_start_);
+  for (std::size_t k = 0; k < ice_->models().size(); ++k)
+    if (auto* b = dynamic_cast<SolidBurnModel*>(ice_->models()[k].get()))
+      b->load_arrays(burn_start_, "mpmice.burn" + std::to_string(k) + ".");
 }
 
 void MpmIceComponent::after_interpolate_to_grid(double t, double dt, int step) {

@@ -19,6 +19,7 @@
 namespace tephra {
 
 struct Deck;
+struct MpmIceNodeWeights;  // MpmIceTransfers.cpp
 
 class MpmIceComponent final : public Component, private MpmCoupling, private SolidBurnSupport {
  public:
@@ -49,6 +50,10 @@ class MpmIceComponent final : public Component, private MpmCoupling, private Sol
   const std::vector<double>& particle_pressure(std::size_t m) const { return particle_pressure_[m]; }
 
  private:
+  // The step-redo snapshot (advance()): save into / restore from the buffers below.
+  void save_step_start();
+  void restore_step_start();
+
   // MpmCoupling (called from MpmComponent::advance).
   void after_interpolate_to_grid(double t, double dt, int step) override;
   void add_internal_forces() override;
@@ -80,6 +85,18 @@ class MpmIceComponent final : public Component, private MpmCoupling, private Sol
   Particles flux_particles_;  // scratch of solid_mass_fluxes
   NodeGrid flux_grid_;
   NodeGrid burn_grid_;
+  // Scratch of the transfers kept across steps (MpmIceTransfers.cpp): the
+  // node weights of each solid (fixed grid and symmetry faces), sum m T at
+  // the nodes, the solid's cell changes du, dT.
+  std::vector<std::shared_ptr<const MpmIceNodeWeights>> node_weights_;
+  std::vector<double> node_mT_;
+  CellVectors change_du_;
+  CellScalars change_dT_;
+  // The step-redo snapshot's buffers, kept across steps (advance(); one
+  // snapshot is live at a time, core/sim/StepRedo.cpp).
+  MpmComponent::StepStart mpm_start_;
+  IceComponent::StepStart ice_start_;
+  StateArchive burn_start_;
   std::vector<std::vector<double>> node_temperature_;  // per MPM material: T_g of step 1 (g.temperature)  // scratch of burn_particles: the node sums of the removed particle mass
 };
 

@@ -18,14 +18,12 @@
 
 namespace tephra {
 
-namespace {
-
 // node_cell_weight (CellProjection.h) of every node of ng: the weight and
 // which symmetry planes the node lies on (bit d: normal to d).
-struct NodeWeights {
+struct MpmIceNodeWeights {
   std::vector<double> w;
   std::vector<unsigned char> plane;
-  NodeWeights(const NodeGrid& ng, const std::array<bool, 6>& symmetric) : w(ng.count()), plane(ng.count()) {
+  MpmIceNodeWeights(const NodeGrid& ng, const std::array<bool, 6>& symmetric) : w(ng.count()), plane(ng.count()) {
     for (int k = 0; k < ng.n[2]; ++k)
       for (int j = 0; j < ng.n[1]; ++j)
         for (int i = 0; i < ng.n[0]; ++i) {
@@ -36,8 +34,6 @@ struct NodeWeights {
         }
   }
 };
-
-}  // namespace
 
 // Step 1 (sec. 26.1.3, "project particle state to the grid"): the P2G node
 // fields m_g, v_g (and T_g = sum m_p T_p S_gp / m_g) of each MPM material are
@@ -58,7 +54,8 @@ void MpmIceComponent::solid_state_to_cells() {
     const NodeGrid& ng = mm.grid;
     const Particles& p = mm.particles;
     const Stencils& st = mm.stencils;
-    std::vector<double> mT(ng.count(), 0.0);  // sum m_p T_p S_gp
+    std::vector<double>& mT = node_mT_;  // sum m_p T_p S_gp (buffer kept across steps)
+    mT.assign(ng.count(), 0.0);
     visit_stencils(st, [&](const auto& view) {
       for (std::size_t i = 0; i < p.size(); ++i)
         view.weights(i, [&](std::size_t gi, double w) { mT[gi] += p.mass[i] * p.temperature[i] * w; });
@@ -71,7 +68,13 @@ void MpmIceComponent::solid_state_to_cells() {
       if (ng.mass[gi] > 0.0) node_temperature_[s][gi] = mT[gi] / ng.mass[gi];
     const IntVec3 off = node_offset(g, ng);
     const std::array<bool, 6> symmetric = symmetry_faces(mm.bcs);
-    const NodeWeights nw(ng, symmetric);
+    // The node weights depend on the grid and the symmetry faces only: built
+    // at the first step (session 19: before, every step, ~20k node_cell_weight
+    // calls and two allocations per material).
+    if (node_weights_.size() <= s) node_weights_.resize(s + 1);
+    if (!node_weights_[s] || node_weights_[s]->w.size() != ng.count())
+      node_weights_[s] = std::make_shared<const MpmIceNodeWeights>(ng, symmetric);
+    const MpmIceNodeWeights& nw = *node_weights_[s];
     const IceMaterialSpec& spec = is.materials[s];
     const double min_mass = spec.tiny_rho * mm.density * V;
     IceMaterialFields& f = fields[s];
@@ -212,8 +215,11 @@ void MpmIceComponent::cell_changes_to_nodes_and_particles() {
   const Grid& g = ice_->grid();
   const IndexRange interior{IntVec3::Zero(), g.cells};
   const std::vector<IceMaterialFields>& fields = ice_->fields();
-  CellVectors du(g, 1);
-  CellScalars dT(g, 1);
+  // du, dT with one ghost layer: buffers kept across steps (every interior
+  // cell is written below, the ghosts by the exchange).
+  if (change_du_.size() != g.patches.size()) change_du_ = CellVectors(g, 1), change_dT_ = CellScalars(g, 1);
+  CellVectors& du = change_du_;
+  CellScalars& dT = change_dT_;
   for (std::size_t s = 0; s < mpm_->materials().size(); ++s) {
     const IceMaterialFields& f = fields[s];
     for (std::size_t pi = 0; pi < g.patches.size(); ++pi)

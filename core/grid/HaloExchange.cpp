@@ -39,6 +39,14 @@ void exchange_impl(const Grid& g, PatchFields<FieldT>& pf, bool nodes) {
     const IndexRange all = f.with_ghosts();
     const IndexRange rows{all.lo, IntVec3(all.lo[0] + 1, all.hi[1], all.hi[2])};
     for_each_cell(rows, [&](int, int j, int k) {
+      // A row beyond the level's extra cells in y or z (non-periodic) has no
+      // entry owner_index accepts: skip it whole (session 19; the same
+      // entries are copied, the per-cell test of its i run is saved).
+      for (int d = 1; d < 3; ++d) {
+        if (g.periodic[d]) continue;
+        const int c = d == 1 ? j : k;
+        if (c < -g.extra_cells[d] || c >= g.cells[d] + g.extra_cells[d] + (nodes ? 1 : 0)) return;
+      }
       // Cells: the with_extra() boxes of the patches partition the level
       // (interior cells plus the extra cells of domain faces), so s lies in
       // patch q's box exactly when owner_patch(s) == q; the last owner is
