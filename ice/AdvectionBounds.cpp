@@ -4,7 +4,10 @@
 #include <algorithm>
 #include <cmath>
 
+#include <vector>
+
 #include "core/grid/Loop.h"
+#include "ice/RowLoop.h"
 
 namespace tephra {
 
@@ -12,34 +15,66 @@ namespace {
 IndexRange faces_of(const Patch& p, int d) { return {p.lo, p.hi + IntVec3::Unit(d)}; }
 }  // namespace
 
+// Row kernel (ice/RowLoop.h): one pointer per face array and row; the sums
+// F1 and F run over the faces in the order x-low, x-high, y-low, y-high,
+// z-low, z-high, with the expressions of the cell loop this replaced
+// (phi_lo = -u r, F1 += phi w q_D with w = 1.0 when unweighted), so the
+// limits are bit for bit those of that loop. Rows write only their own
+// cells and their own entry of row_any, so any thread count gives the same
+// result.
 bool outflow_limits(const Grid& g, const CellScalars& q, const FaceScalars& u, const FaceScalars* weight, double dt,
                     const FaceScalars& flux, CellScalars& limit) {
   limit.fill(1.0);
   bool any = false;
-  for (std::size_t pi = 0; pi < g.patches.size(); ++pi)
-    for_each_cell_serial(g.patches[pi].cells(), [&](int i, int j, int k) {
-      const IntVec3 c(i, j, k);
-      const double qD = q[pi](c);
-      double F1 = 0, F = 0;  // first-order and actual outflow of c
-      for (int d = 0; d < 3; ++d) {
-        const IntVec3 hi = c + IntVec3::Unit(d);
-        const double r = dt / g.dx[d];
-        const double phi_lo = -u.at(d, pi)(c) * r, phi_hi = u.at(d, pi)(hi) * r;
-        if (phi_lo > 0) {
-          F1 += phi_lo * (weight ? weight->at(d, pi)(c) : 1.0) * qD;
-          F -= flux.at(d, pi)(c);
+  const double r[3] = {dt / g.dx[0], dt / g.dx[1], dt / g.dx[2]};
+  std::vector<unsigned char> row_any;
+  for (std::size_t pi = 0; pi < g.patches.size(); ++pi) {
+    const IndexRange cells = g.patches[pi].cells();
+    if (cells.empty()) continue;
+    const int i0 = cells.lo[0], n = cells.hi[0] - i0, j0 = cells.lo[1], nj = cells.hi[1] - j0, k0 = cells.lo[2];
+    row_any.assign(std::size_t(nj) * std::size_t(cells.hi[2] - k0), 0);
+    for_each_row(cells, [&](int j, int k) {
+      const double* qr = row_ptr(q[pi], i0, j, k);
+      double* lim = row_ptr(limit[pi], i0, j, k);
+      // Low and high face of each axis: (u, F, w) rows; the x high face is entry c + 1 of the low row.
+      const double* ul[3] = {row_ptr(u.at(0, pi), i0, j, k), row_ptr(u.at(1, pi), i0, j, k),
+                             row_ptr(u.at(2, pi), i0, j, k)};
+      const double* uh[3] = {ul[0] + 1, row_ptr(u.at(1, pi), i0, j + 1, k), row_ptr(u.at(2, pi), i0, j, k + 1)};
+      const double* Fl[3] = {row_ptr(flux.at(0, pi), i0, j, k), row_ptr(flux.at(1, pi), i0, j, k),
+                             row_ptr(flux.at(2, pi), i0, j, k)};
+      const double* Fh[3] = {Fl[0] + 1, row_ptr(flux.at(1, pi), i0, j + 1, k), row_ptr(flux.at(2, pi), i0, j, k + 1)};
+      const double* wl[3] = {nullptr, nullptr, nullptr};
+      const double* wh[3] = {nullptr, nullptr, nullptr};
+      if (weight)
+        for (int d = 0; d < 3; ++d) {
+          wl[d] = row_ptr(weight->at(d, pi), i0, j, k);
+          wh[d] = d == 0 ? wl[0] + 1 : row_ptr(weight->at(d, pi), i0, j + (d == 1), k + (d == 2));
         }
-        if (phi_hi > 0) {
-          F1 += phi_hi * (weight ? weight->at(d, pi)(hi) : 1.0) * qD;
-          F += flux.at(d, pi)(hi);
+      bool row_limited = false;
+      for (int c = 0; c < n; ++c) {
+        const double qD = qr[c];
+        double F1 = 0, F = 0;  // first-order and actual outflow of the cell
+        for (int d = 0; d < 3; ++d) {
+          const double phi_lo = -ul[d][c] * r[d], phi_hi = uh[d][c] * r[d];
+          if (phi_lo > 0) {
+            F1 += phi_lo * (weight ? wl[d][c] : 1.0) * qD;
+            F -= Fl[d][c];
+          }
+          if (phi_hi > 0) {
+            F1 += phi_hi * (weight ? wh[d][c] : 1.0) * qD;
+            F += Fh[d][c];
+          }
+        }
+        const double A = 0.5 * (qD + F1);
+        if (F > A && F > F1) {
+          lim[c] = std::max(0.0, (A - F1) / (F - F1));
+          row_limited = true;
         }
       }
-      const double A = 0.5 * (qD + F1);
-      if (F > A && F > F1) {
-        limit[pi](c) = std::max(0.0, (A - F1) / (F - F1));
-        any = true;
-      }
+      if (row_limited) row_any[std::size_t(k - k0) * std::size_t(nj) + std::size_t(j - j0)] = 1;
     });
+    for (unsigned char a : row_any) any = any || a != 0;
+  }
   return any;
 }
 
