@@ -43,6 +43,19 @@
 
 namespace tephra {
 
+// When item 1 cannot act (pure ICE, no weights): the slab value of the
+// limited gradient (IceAdvection.cpp) is q_D + alpha g_d (1 - |phi|)/2 with
+// alpha |g_d|/2 <= alpha sum_d |g_d|/2 <= q_D - q_min, so it is at most
+// 2 q_D - q_min <= 2 q_D for nonnegative masses (q_min >= 0), and the actual
+// outflow F_D = sum_out phi_f slab_f <= 2 q_D S_D with S_D = sum_out phi_f,
+// while F1_D = q_D S_D and A_D = q_D (1 + S_D)/2. F_D > A_D needs
+// 2 S_D > (1 + S_D)/2, i.e. S_D > 1/3. Where every cell has S_D <= 0.3
+// (check_outflux returns the largest S_D) no donor is limited, and the pass
+// can be skipped: the fluxes are the same bits. The margin 1/3 - 0.3 covers
+// the round-off of the screen form of S_D and of the slab values (relative
+// 1e-15) many times over.
+constexpr double kOutflowBoundInactive = 0.3;
+
 // limit(D) = s_D for every interior cell D whose outflow exceeds A_D, 1 for
 // the others (extra cells and ghosts are set to 1: exchange the ghosts after).
 // weight: w_f per face (null: 1). Returns whether any cell is limited.

@@ -34,8 +34,11 @@ namespace tephra {
 
 // Throws NumericalFailure naming the cell when a cell would lose more than
 // its content in one step (sum of outgoing phi > 1: the CFL bound, Uintah's
-// "bullet proofing" of the outflux volumes).
-void check_outflux(const Grid& g, const FaceScalars& u, double dt, int step);
+// "bullet proofing" of the outflux volumes). Returns the largest outflow
+// fraction sum_out phi over the interior cells of g (its screen form,
+// sum of max(0, -+u) dt/dx; 0 for no cells): bound_outflow skips its pass
+// below kOutflowBoundInactive (ice/AdvectionBounds.h).
+double check_outflux(const Grid& g, const FaceScalars& u, double dt, int step);
 
 // flux.at(d, p)(face) = F (signed: positive along +d) for every face of the
 // interior cells of every patch. q must hold valid values in the extra cells

@@ -191,7 +191,7 @@ class IceComponent final : public Component {
   // Returns whether it scaled (solids present, m a fluid); the face weights chi L are then in lag_weight_.
   bool scale_fluid_flux(std::size_t m, double dt, FaceScalars& flux);
   // The donor outflow bound of ice/AdvectionBounds.h on material m's mass fluxes flux_ (IceLagrangianFlux.cpp).
-  void bound_outflow(std::size_t m, double dt, const FaceScalars* weight);
+  void bound_outflow(std::size_t m, double dt, const FaceScalars* weight, double largest_outflow);
   // theta_s,face of solid s on face R of axis d and the solid's phi = u dt/dx there.
   struct SolidFaceFraction {
     double theta = 0, phi = 0;

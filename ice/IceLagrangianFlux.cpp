@@ -218,10 +218,16 @@ bool IceComponent::scale_fluid_flux(std::size_t m, double dt, FaceScalars& flux)
 // the cell of a trace fluid inside a solid, whose weighted outflow
 // sum phi chi L reaches 1/2 of its content (the limit above) and whose
 // second-order slab value reaches twice its content.
-void IceComponent::bound_outflow(std::size_t m, double dt, const FaceScalars* weight) {
+// largest_outflow: this rank's largest sum_out phi (check_outflux). Without
+// weights and below kOutflowBoundInactive no donor can be limited
+// (AdvectionBounds.h), so the pass is skipped; every rank still takes part
+// in the layout_.any below.
+void IceComponent::bound_outflow(std::size_t m, double dt, const FaceScalars* weight, double largest_outflow) {
   const Grid& g = setup_.grid;
   if (outflow_limit_.size() == 0) outflow_limit_ = CellScalars(g, 2);
-  const bool any = outflow_limits(g, mass_L_[m], mats_[m].vel_FCME, weight, dt, flux_, outflow_limit_);
+  const bool may_act = weight != nullptr || !(largest_outflow <= kOutflowBoundInactive);
+  const bool any =
+      may_act && outflow_limits(g, mass_L_[m], mats_[m].vel_FCME, weight, dt, flux_, outflow_limit_);
   if (!layout_.any(any)) return;
   halo_->exchange(outflow_limit_);
   limit_outflow(g, mass_L_[m], mats_[m].vel_FCME, weight, dt, outflow_limit_, flux_);

@@ -658,12 +658,12 @@ void IceComponent::advect_and_advance(double dt, int step) {
   for (std::size_t m = 0; m < mats_.size(); ++m) {
     if (setup_.materials[m].lagrangian) continue;  // MPMICE solid: the particles carry it (mpmice/)
     IceMaterialFields& f = mats_[m];
-    check_outflux(g, f.vel_FCME, dt, step);
+    const double largest_outflow = check_outflux(g, f.vel_FCME, dt, step);  // the largest sum_out phi
     // Mass first; its face fluxes carry the specific quantities.
     density_fluxes(g, setup_.advection, mass_L_[m], f.vel_FCME, dt, flux_);
     const bool weighted = scale_fluid_flux(m, dt, flux_);  // MPMICE: the face area the solids leave (IceLagrangianFlux.cpp)
     if (setup_.advection != AdvectionOrder::First)  // no donor sends more than (q + first-order outflow)/2
-      bound_outflow(m, dt, weighted ? &lag_weight_ : nullptr);  // ice/AdvectionBounds.h
+      bound_outflow(m, dt, weighted ? &lag_weight_ : nullptr, largest_outflow);  // ice/AdvectionBounds.h
     specific_fluxes(g, setup_.advection, vel_L_[m], f.vel_FCME, flux_, dt, flux_v_);
     // The net inflows (flux_divergence) of mass and momentum, summed in the row loop.
     for (std::size_t pi = 0; pi < g.patches.size(); ++pi) {

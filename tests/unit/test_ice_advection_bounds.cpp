@@ -160,5 +160,66 @@ TEST(IceAdvectionBounds, LimitedDonorSendsHalfOfContentPlusFirstOrderOutflow) {
   EXPECT_EQ(limit[0](2, 0, 0), 1.0);  // the big cell (q = 1) sends 0.2 + O(phi): not limited
 }
 
+// 3. The skip of bound_outflow (kOutflowBoundInactive, AdvectionBounds.h):
+//    with S_D = sum_out phi <= 0.3 everywhere no donor can be limited, since
+//    F_D <= 2 q_D S_D <= A_D = q_D (1 + S_D)/2 for S_D <= 1/3. Checked on the
+//    steepest fields the limiter admits: masses spread over 12 decades at
+//    random (log-uniform, so alpha g reaches q - q_min), random face
+//    velocities of both signs scaled so that check_outflux's largest S_D is
+//    0.3; 20 fields. Also: check_outflux returns that largest S_D (closed
+//    form for u = (1, 1): 2 phi), and at S_D = 0.9 the same kind of field
+//    does limit cells (the skip is not vacuous).
+TEST(IceAdvectionBounds, NoDonorIsLimitedBelowTheInactiveOutflow) {
+  set_thread_count(1);
+  const Grid g = periodic_square(16);
+  LocalHaloExchange halo(g);
+  CellScalars mass(g, 2), limit(g, 2);
+  FaceScalars u(g, 0), flux(g, 0);
+  // check_outflux on u = (1, 1): every cell sends phi through its x-high and y-high faces.
+  u.x.fill(1.0);
+  u.y.fill(1.0);
+  u.z.fill(0.0);
+  const double phi = 0.15, dt0 = phi * g.dx[0];
+  EXPECT_NEAR(check_outflux(g, u, dt0, 0), 2 * phi, 1e-15);  // S_D = 2 phi (closed form)
+  unsigned state = 12345u;
+  auto uniform = [&]() {  // LCG (Numerical Recipes constants), [0, 1)
+    state = 1664525u * state + 1013904223u;
+    return double(state >> 8) / double(1u << 24);
+  };
+  int limited_at_09 = 0;
+  for (int trial = 0; trial < 20; ++trial) {
+    for (std::size_t pi = 0; pi < g.patches.size(); ++pi) {
+      for_each_cell_serial(g.patches[pi].cells(), [&](int i, int j, int k) {
+        mass[pi](i, j, k) = std::pow(10.0, -12.0 * uniform());
+      });
+    }
+    halo.exchange(mass);
+    // u in [-1, 1), a hash of the periodic face index, so that the face
+    // arrays of the two patches agree on their shared and periodic faces.
+    for (std::size_t pi = 0; pi < g.patches.size(); ++pi)
+      for (int d = 0; d < 2; ++d)
+        for_each_cell_serial(u.at(d, pi).with_ghosts(), [&](int i, int j, int k) {
+          const int ii = ((i % 16) + 16) % 16, jj = ((j % 16) + 16) % 16;
+          const unsigned h = 2654435761u * unsigned(ii + 16 * jj + 256 * d + 1000 * trial + 7);
+          u.at(d, pi)(i, j, k) = 2.0 * double(h >> 8) / double(1u << 24) - 1.0;
+        });
+    const double dt_ref = 0.1 * g.dx[0];            // |u| < 1, at most 4 outgoing faces: S_D < 0.4
+    const double S1 = check_outflux(g, u, dt_ref, 0);  // largest S_D at dt_ref (S_D is linear in dt)
+    for (double target : {kOutflowBoundInactive, 0.9}) {
+      const double dt = dt_ref * target / S1;
+      ASSERT_NEAR(check_outflux(g, u, dt, 0), target, 1e-12);
+      density_fluxes(g, AdvectionOrder::Second, mass, u, dt, flux);
+      const bool any = outflow_limits(g, mass, u, nullptr, dt, flux, limit);
+      if (target == kOutflowBoundInactive) {
+        EXPECT_FALSE(any) << "trial " << trial;
+      } else if (any) {
+        ++limited_at_09;
+      }
+    }
+  }
+  std::printf("fields with limited donors at S = 0.9: %d of 20\n", limited_at_09);
+  EXPECT_GT(limited_at_09, 0);
+}
+
 }  // namespace
 }  // namespace tephra
