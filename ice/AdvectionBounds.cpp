@@ -99,32 +99,58 @@ void limit_outflow(const Grid& g, const CellScalars& q, const FaceScalars& u, co
     }
 }
 
+// Row kernels, as outflow_limits: the range over the neighbours and the
+// outgoing sums in the order of the cell loop they replaced (x, y, z; low
+// face before high face), so the flags are the same.
 bool flag_out_of_range_donors(const Grid& g, const CellScalars& psi, const CellScalars& mass,
                               const FaceScalars& mass_flux, const FaceScalars& psi_flux, CellScalars& flag) {
   bool any = false;
+  std::vector<unsigned char> row_any;
   for (std::size_t pi = 0; pi < g.patches.size(); ++pi) {
     flag[pi].fill(0.0);
-    for_each_cell_serial(g.patches[pi].cells(), [&](int i, int j, int k) {
-      const IntVec3 c(i, j, k);
-      const double p = psi[pi](c), M = mass[pi](c);
-      double lo = p, hi = p, out_M = 0, out_Q = 0;
+    const IndexRange cells = g.patches[pi].cells();
+    if (cells.empty()) continue;
+    const int i0 = cells.lo[0], n = cells.hi[0] - i0, j0 = cells.lo[1], nj = cells.hi[1] - j0, k0 = cells.lo[2];
+    row_any.assign(std::size_t(nj) * std::size_t(cells.hi[2] - k0), 0);
+    for_each_row(cells, [&](int j, int k) {
+      const double* ps = row_ptr(psi[pi], i0, j, k);
+      const double* M_row = row_ptr(mass[pi], i0, j, k);
+      // Neighbour rows of psi (-d, +d) and low/high face rows of the fluxes per axis d.
+      const double* pn[3][2] = {{ps - 1, ps + 1},
+                                {row_ptr(psi[pi], i0, j - 1, k), row_ptr(psi[pi], i0, j + 1, k)},
+                                {row_ptr(psi[pi], i0, j, k - 1), row_ptr(psi[pi], i0, j, k + 1)}};
+      const double* mf[3][2];
+      const double* qf[3][2];
       for (int d = 0; d < 3; ++d) {
-        const IntVec3 e = IntVec3::Unit(d), up = c + e;
-        lo = std::min({lo, psi[pi](IntVec3(c - e)), psi[pi](up)});
-        hi = std::max({hi, psi[pi](IntVec3(c - e)), psi[pi](up)});
-        // Outgoing: negative flux on the low face, positive on the high face (the mass flux decides the donor).
-        if (mass_flux.at(d, pi)(c) < 0) out_M -= mass_flux.at(d, pi)(c), out_Q -= psi_flux.at(d, pi)(c);
-        if (mass_flux.at(d, pi)(up) > 0) out_M += mass_flux.at(d, pi)(up), out_Q += psi_flux.at(d, pi)(up);
+        mf[d][0] = row_ptr(mass_flux.at(d, pi), i0, j, k);
+        qf[d][0] = row_ptr(psi_flux.at(d, pi), i0, j, k);
+        mf[d][1] = d == 0 ? mf[0][0] + 1 : row_ptr(mass_flux.at(d, pi), i0, j + (d == 1), k + (d == 2));
+        qf[d][1] = d == 0 ? qf[0][0] + 1 : row_ptr(psi_flux.at(d, pi), i0, j + (d == 1), k + (d == 2));
       }
-      if (out_M == 0.0) return;
-      const double RM = M - out_M, RQ = M * p - out_Q;
-      const double tol = 1e-12 * std::max(std::abs(lo), std::abs(hi)) * M;
-      const bool bad = RM > 0 ? (RQ < lo * RM - tol || RQ > hi * RM + tol) : out_Q > M * p;
-      if (bad) {
-        flag[pi](c) = 1.0;
-        any = true;
+      double* fl = row_ptr(flag[pi], i0, j, k);
+      bool row_flagged = false;
+      for (int c = 0; c < n; ++c) {
+        const double p = ps[c], M = M_row[c];
+        double lo = p, hi = p, out_M = 0, out_Q = 0;
+        for (int d = 0; d < 3; ++d) {
+          lo = std::min({lo, pn[d][0][c], pn[d][1][c]});
+          hi = std::max({hi, pn[d][0][c], pn[d][1][c]});
+          // Outgoing: negative flux on the low face, positive on the high face (the mass flux decides the donor).
+          if (mf[d][0][c] < 0) out_M -= mf[d][0][c], out_Q -= qf[d][0][c];
+          if (mf[d][1][c] > 0) out_M += mf[d][1][c], out_Q += qf[d][1][c];
+        }
+        if (out_M == 0.0) continue;
+        const double RM = M - out_M, RQ = M * p - out_Q;
+        const double tol = 1e-12 * std::max(std::abs(lo), std::abs(hi)) * M;
+        const bool bad = RM > 0 ? (RQ < lo * RM - tol || RQ > hi * RM + tol) : out_Q > M * p;
+        if (bad) {
+          fl[c] = 1.0;
+          row_flagged = true;
+        }
       }
+      if (row_flagged) row_any[std::size_t(k - k0) * std::size_t(nj) + std::size_t(j - j0)] = 1;
     });
+    for (unsigned char a : row_any) any = any || a != 0;
   }
   return any;
 }
@@ -133,12 +159,21 @@ void donor_value_fluxes(const Grid& g, const CellScalars& psi, const FaceScalars
                         FaceScalars& psi_flux) {
   for (std::size_t pi = 0; pi < g.patches.size(); ++pi)
     for (int d = 0; d < 3; ++d) {
-      const GridArray<double>& mf = mass_flux.at(d, pi);
-      GridArray<double>& F = psi_flux.at(d, pi);
-      for_each_cell_serial(faces_of(g.patches[pi], d), [&](int i, int j, int k) {
-        const IntVec3 f(i, j, k);
-        const IntVec3 donor = mf(f) > 0.0 ? IntVec3(f - IntVec3::Unit(d)) : f;
-        if (flag[pi](donor) != 0.0) F(f) = mf(f) * psi[pi](donor);
+      const IndexRange faces = faces_of(g.patches[pi], d);
+      const int i0 = faces.lo[0], n = faces.hi[0] - i0;
+      const int ex = d == 0, ey = d == 1, ez = d == 2;
+      for_each_row(faces, [&](int j, int k) {
+        const double* mf = row_ptr(mass_flux.at(d, pi), i0, j, k);
+        double* F = row_ptr(psi_flux.at(d, pi), i0, j, k);
+        // The face's low cell (donor when mf > 0) and high cell, for flag and psi.
+        const double* flag_lo = row_ptr(flag[pi], i0 - ex, j - ey, k - ez);
+        const double* flag_hi = row_ptr(flag[pi], i0, j, k);
+        const double* psi_lo = row_ptr(psi[pi], i0 - ex, j - ey, k - ez);
+        const double* psi_hi = row_ptr(psi[pi], i0, j, k);
+        for (int c = 0; c < n; ++c) {
+          const bool from_low = mf[c] > 0.0;
+          if ((from_low ? flag_lo[c] : flag_hi[c]) != 0.0) F[c] = mf[c] * (from_low ? psi_lo[c] : psi_hi[c]);
+        }
       });
     }
 }
