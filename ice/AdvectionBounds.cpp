@@ -4,8 +4,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include <vector>
-
 #include "core/grid/Loop.h"
 #include "ice/RowLoop.h"
 
@@ -13,6 +11,20 @@ namespace tephra {
 
 namespace {
 IndexRange faces_of(const Patch& p, int d) { return {p.lo, p.hi + IntVec3::Unit(d)}; }
+
+// for_each_row (ice/RowLoop.h) with a kernel that returns whether its row
+// marked a cell; returns whether any row did. Every row runs; the OR is
+// exact, so the result does not depend on the thread count.
+template <class Kernel>
+bool any_row_marks(const IndexRange& r, Kernel&& kernel) {
+  if (r.empty()) return false;
+  bool any = false;
+#pragma omp parallel for collapse(2) schedule(static) reduction(|| : any) if (r.size() >= kMinCellsPerParallelLoop)
+  for (int k = r.lo[2]; k < r.hi[2]; ++k)
+    for (int j = r.lo[1]; j < r.hi[1]; ++j)
+      if (kernel(j, k)) any = true;
+  return any;
+}
 }  // namespace
 
 // Row kernel (ice/RowLoop.h): one pointer per face array and row; the sums
@@ -20,20 +32,17 @@ IndexRange faces_of(const Patch& p, int d) { return {p.lo, p.hi + IntVec3::Unit(
 // z-low, z-high, with the expressions of the cell loop this replaced
 // (phi_lo = -u r, F1 += phi w q_D with w = 1.0 when unweighted), so the
 // limits are bit for bit those of that loop. Rows write only their own
-// cells and their own entry of row_any, so any thread count gives the same
-// result.
+// cells, and the rows' "limited" answers are OR-ed (any_row_marks), so any
+// thread count gives the same result.
 bool outflow_limits(const Grid& g, const CellScalars& q, const FaceScalars& u, const FaceScalars* weight, double dt,
                     const FaceScalars& flux, CellScalars& limit) {
   limit.fill(1.0);
   bool any = false;
   const double r[3] = {dt / g.dx[0], dt / g.dx[1], dt / g.dx[2]};
-  std::vector<unsigned char> row_any;
   for (std::size_t pi = 0; pi < g.patches.size(); ++pi) {
     const IndexRange cells = g.patches[pi].cells();
-    if (cells.empty()) continue;
-    const int i0 = cells.lo[0], n = cells.hi[0] - i0, j0 = cells.lo[1], nj = cells.hi[1] - j0, k0 = cells.lo[2];
-    row_any.assign(std::size_t(nj) * std::size_t(cells.hi[2] - k0), 0);
-    for_each_row(cells, [&](int j, int k) {
+    const int i0 = cells.lo[0], n = cells.hi[0] - i0;
+    const bool patch_any = any_row_marks(cells, [&](int j, int k) {
       const double* qr = row_ptr(q[pi], i0, j, k);
       double* lim = row_ptr(limit[pi], i0, j, k);
       // Low and high face of each axis: (u, F, w) rows; the x high face is entry c + 1 of the low row.
@@ -71,9 +80,9 @@ bool outflow_limits(const Grid& g, const CellScalars& q, const FaceScalars& u, c
           row_limited = true;
         }
       }
-      if (row_limited) row_any[std::size_t(k - k0) * std::size_t(nj) + std::size_t(j - j0)] = 1;
+      return row_limited;
     });
-    for (unsigned char a : row_any) any = any || a != 0;
+    any = any || patch_any;
   }
   return any;
 }
@@ -105,14 +114,11 @@ void limit_outflow(const Grid& g, const CellScalars& q, const FaceScalars& u, co
 bool flag_out_of_range_donors(const Grid& g, const CellScalars& psi, const CellScalars& mass,
                               const FaceScalars& mass_flux, const FaceScalars& psi_flux, CellScalars& flag) {
   bool any = false;
-  std::vector<unsigned char> row_any;
   for (std::size_t pi = 0; pi < g.patches.size(); ++pi) {
     flag[pi].fill(0.0);
     const IndexRange cells = g.patches[pi].cells();
-    if (cells.empty()) continue;
-    const int i0 = cells.lo[0], n = cells.hi[0] - i0, j0 = cells.lo[1], nj = cells.hi[1] - j0, k0 = cells.lo[2];
-    row_any.assign(std::size_t(nj) * std::size_t(cells.hi[2] - k0), 0);
-    for_each_row(cells, [&](int j, int k) {
+    const int i0 = cells.lo[0], n = cells.hi[0] - i0;
+    const bool patch_any = any_row_marks(cells, [&](int j, int k) {
       const double* ps = row_ptr(psi[pi], i0, j, k);
       const double* M_row = row_ptr(mass[pi], i0, j, k);
       // Neighbour rows of psi (-d, +d) and low/high face rows of the fluxes per axis d.
@@ -148,9 +154,9 @@ bool flag_out_of_range_donors(const Grid& g, const CellScalars& psi, const CellS
           row_flagged = true;
         }
       }
-      if (row_flagged) row_any[std::size_t(k - k0) * std::size_t(nj) + std::size_t(j - j0)] = 1;
+      return row_flagged;
     });
-    for (unsigned char a : row_any) any = any || a != 0;
+    any = any || patch_any;
   }
   return any;
 }
