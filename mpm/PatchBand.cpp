@@ -19,6 +19,7 @@ void PatchBand::prepare(const Grid& level, const NodeGrid& g, int reach) {
                     lower_ == level.lower && dx_ == level.dx;
   if (same) return;
   active_ = true;
+  clear_n_ = 0;  // the box answers belong to the previous band
   reach_ = std::max(reach, reach_);
   const int R = reach_;
   lower_ = level.lower, dx_ = level.dx, off_ = off, nodes_ = g.n;
@@ -99,6 +100,32 @@ void PatchBand::prepare(const Grid& level, const NodeGrid& g, int reach) {
         if (P < 0) throw std::logic_error("PatchBand: no patch owns an interior cell");
         cell_tag_[std::size_t(i) + std::size_t(cells_[0]) * (std::size_t(j) + std::size_t(cells_[1]) * k)] = P;
       }
+}
+
+// clear_[b] = no band node in [b, b + n - 1] per axis (clipped to the grid):
+// the band flags OR-ed over a forward window of n nodes, one axis at a time
+// (a separable box filter; O(nodes x n)).
+void PatchBand::boxes(int n) {
+  if (!active_ || n <= 0 || n == clear_n_) return;
+  const std::size_t nn = node_slot_.size();
+  std::vector<std::uint8_t> hit(nn), tmp(nn);
+  for (std::size_t gi = 0; gi < nn; ++gi) hit[gi] = node_slot_[gi] >= 0;
+  const std::size_t stride[3] = {1, std::size_t(nodes_[0]), std::size_t(nodes_[0]) * std::size_t(nodes_[1])};
+  for (int d = 0; d < 3; ++d) {
+    for (int k = 0; k < nodes_[2]; ++k)
+      for (int j = 0; j < nodes_[1]; ++j)
+        for (int i = 0; i < nodes_[0]; ++i) {
+          const int at[3] = {i, j, k};
+          const std::size_t gi = std::size_t(i) + stride[1] * std::size_t(j) + stride[2] * std::size_t(k);
+          std::uint8_t any = 0;
+          for (int t = 0; t < n && at[d] + t < nodes_[d]; ++t) any |= hit[gi + std::size_t(t) * stride[d]];
+          tmp[gi] = any;
+        }
+    hit.swap(tmp);
+  }
+  clear_.resize(nn);
+  for (std::size_t gi = 0; gi < nn; ++gi) clear_[gi] = !hit[gi];
+  clear_n_ = n;
 }
 
 void PatchBand::set_ranks(std::vector<int> owner, int me,

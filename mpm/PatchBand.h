@@ -70,6 +70,18 @@ class PatchBand {
     }
     return cell_tag_[c];
   }
+  // The node-box test of the per-axis stencils: boxes(n) prepares, for
+  // every node b, whether the box of n x n x n nodes from b (b the lowest
+  // node of a per-axis stencil, AxisStencils.h) holds no band node. Such a
+  // particle writes every one of its nodes directly in the band variant of
+  // a scatter too (slot() < 0 at each), with the same expressions as
+  // without the band: it may skip tag() (3 divisions and floors) and take
+  // the plain path, the same bits. Call outside parallel regions, before
+  // the scatter; n = 0 (flat stencils) builds nothing.
+  void boxes(int n);
+  // boxes(n)'s answer for lowest node b: true when the box holds no band node.
+  bool box_clear(std::size_t b) const { return clear_[b] != 0; }
+
   // Band node index of node gi, or -1.
   int slot(std::size_t gi) const { return node_slot_[gi]; }
   // The partial (width doubles) of band node k for patch P (P's reach box holds the node).
@@ -97,6 +109,8 @@ class PatchBand {
   std::size_t patches_ = 0;
   std::vector<int> cell_tag_;               // per node-grid cell
   std::vector<int> node_slot_;              // per node
+  std::vector<std::uint8_t> clear_;         // per node: boxes(clear_n_)'s answer
+  int clear_n_ = 0;                         // box size clear_ was built for (0: none / stale)
   std::vector<std::size_t> band_node_;      // band node k -> flat node index
   std::vector<std::uint32_t> pair_first_;   // band node k's pairs: [pair_first_[k], pair_first_[k+1])
   std::vector<int> pair_patch_;             // ascending patch id within a node
