@@ -26,7 +26,8 @@
 //
 // After a scatter, reduce() adds the partials of every band node in
 // ascending patch id (on ranks: after gathering the partials of all ranks'
-// patches, one MPI_Allgatherv of the band pairs only) and hands the sum to
+// patches, one MPI_Allgatherv of the band pairs that hold a non-zero value,
+// as (pair index, values) records) and hands the sum to
 // the caller, who writes it into its node arrays (whose band entries no
 // particle wrote); the partials are zeroed for the next scatter.
 //
@@ -98,6 +99,10 @@ class PatchBand {
   // sum(gi, s): s the ordered sum (width doubles) at band node gi; the partials are zeroed.
   void reduce(int width, const std::function<void(std::size_t gi, const double* s)>& sum);
 
+  // On ranks: the (pair, values) records this rank sent in the last reduce
+  // (its pairs with a non-zero value; 0 in one process).
+  std::size_t sent_records() const { return sent_records_; }
+
   // Flat node indices of the band (ascending).
   const std::vector<std::size_t>& band_node_index() const { return band_node_; }
 
@@ -119,6 +124,7 @@ class PatchBand {
   int me_ = 0;
   std::function<std::vector<double>(const std::vector<double>&)> gather_;
   std::vector<double> send_;                // scratch of reduce on ranks
+  std::size_t sent_records_ = 0;
 };
 
 }  // namespace tephra

@@ -25,7 +25,9 @@
 // band sums included, is 0 + 0 + ... = 0.
 // A second call on the same band, with the needed flags of a normal step
 // (all nodes on every rank), checks that the ranks stayed in step: its band
-// sums equal the one-process band run bit for bit at every band node.
+// sums equal the one-process band run bit for bit at every band node. The
+// exchange carries only the pairs that hold a non-zero value: none in the
+// first call, some (at most the band's pairs) in the second.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -128,6 +130,8 @@ TEST(MpiBandCollective, MuslScatterWithoutNeededNodesStillTakesPartInTheBandRedu
   double largest = 0;
   for (const Vec3& v : out) largest = std::max(largest, v.cwiseAbs().maxCoeff());
   EXPECT_EQ(largest, 0.0) << "no particle reaches a needed node: v = 0 everywhere (rank " << r.rank << ")";
+  // The exchange sends only pairs with a non-zero value (PatchBand::reduce): none here.
+  EXPECT_EQ(b.band.sent_records(), 0u);
 
   // 2. Still in step: every node needed on every rank; the band nodes hold the
   //    ordered sums of all patches = the one-process band run's bits.
@@ -142,6 +146,14 @@ TEST(MpiBandCollective, MuslScatterWithoutNeededNodesStillTakesPartInTheBandRedu
   for (std::size_t gi : b.band.band_node_index()) differ += out[gi] != ref[gi];
   EXPECT_GT(b.band.band_nodes(), 0u);
   EXPECT_EQ(differ, 0u) << "band nodes whose ordered sum differs from the one-process run (rank " << r.rank << ")";
+  // Now the owners' particles reach band nodes: records travel (on ranks),
+  // fewer than the band's pairs (only the reached ones).
+  double sent = 0;
+  for (double n : all_gather({double(b.band.sent_records())})) sent += n;
+  if (r.size > 1) {
+    EXPECT_GT(sent, 0.0);
+    EXPECT_LE(sent, double(b.band.pairs()));
+  }
 }
 
 }  // namespace
