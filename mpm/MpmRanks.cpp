@@ -24,6 +24,7 @@
 #include <string>
 
 #include "core/base/Errors.h"
+#include "core/base/PhaseTimers.h"
 #include "core/parallel/Ranks.h"
 #include "mpm/MpmComponent.h"
 #include "mpm/ParticleDeletion.h"
@@ -124,7 +125,11 @@ void MpmComponent::lay_out_patches() {
     for (const Vec3& x : m.particles.x) ++count[std::size_t(patch_of(x))];
   layout_ = PatchLayout::over_world_ranks(setup_.grid, count);
   if (!layout_.distributed) return;
-  band_.set_ranks(layout_.owner, world_ranks().rank, [](const std::vector<double>& v) { return all_gather(v); });
+  // The band exchange timed as its own phase (nested in the scatter's phase).
+  band_.set_ranks(layout_.owner, world_ranks().rank, [](const std::vector<double>& v) {
+    PhaseTimers::Scope t(phase_timers(), "MPI: collectives");
+    return all_gather(v);
+  });
   check_rank_support();
   for (MpmMaterial& m : setup_.materials) keep_own_particles(m);
 }

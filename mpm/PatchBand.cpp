@@ -19,6 +19,7 @@ void PatchBand::prepare(const Grid& level, const NodeGrid& g, int reach) {
                     lower_ == level.lower && dx_ == level.dx;
   if (same) return;
   active_ = true;
+  clear_n_ = 0;  // the box answers belong to the previous band
   reach_ = std::max(reach, reach_);
   const int R = reach_;
   lower_ = level.lower, dx_ = level.dx, off_ = off, nodes_ = g.n;
@@ -101,6 +102,32 @@ void PatchBand::prepare(const Grid& level, const NodeGrid& g, int reach) {
       }
 }
 
+// clear_[b] = no band node in [b, b + n - 1] per axis (clipped to the grid):
+// the band flags OR-ed over a forward window of n nodes, one axis at a time
+// (a separable box filter; O(nodes x n)).
+void PatchBand::boxes(int n) {
+  if (!active_ || n <= 0 || n == clear_n_) return;
+  const std::size_t nn = node_slot_.size();
+  std::vector<std::uint8_t> hit(nn), tmp(nn);
+  for (std::size_t gi = 0; gi < nn; ++gi) hit[gi] = node_slot_[gi] >= 0;
+  const std::size_t stride[3] = {1, std::size_t(nodes_[0]), std::size_t(nodes_[0]) * std::size_t(nodes_[1])};
+  for (int d = 0; d < 3; ++d) {
+    for (int k = 0; k < nodes_[2]; ++k)
+      for (int j = 0; j < nodes_[1]; ++j)
+        for (int i = 0; i < nodes_[0]; ++i) {
+          const int at[3] = {i, j, k};
+          const std::size_t gi = std::size_t(i) + stride[1] * std::size_t(j) + stride[2] * std::size_t(k);
+          std::uint8_t any = 0;
+          for (int t = 0; t < n && at[d] + t < nodes_[d]; ++t) any |= hit[gi + std::size_t(t) * stride[d]];
+          tmp[gi] = any;
+        }
+    hit.swap(tmp);
+  }
+  clear_.resize(nn);
+  for (std::size_t gi = 0; gi < nn; ++gi) clear_[gi] = !hit[gi];
+  clear_n_ = n;
+}
+
 void PatchBand::set_ranks(std::vector<int> owner, int me,
                           std::function<std::vector<double>(const std::vector<double>&)> gather) {
   owner_ = std::move(owner);
@@ -112,21 +139,43 @@ void PatchBand::reduce(int width, const std::function<void(std::size_t gi, const
   if (!active_) return;
   const std::size_t W = std::size_t(kMaxWidth), w = std::size_t(width);
   if (gather_) {
-    // This rank's pairs (its patches') in pair order; every rank's, in rank
-    // order, written back into the pairs of their patches.
-    send_.clear();
-    for (std::size_t j = 0; j < pair_patch_.size(); ++j)
-      if (owner_[std::size_t(pair_patch_[j])] == me_) send_.insert(send_.end(), &buffer_[j * W], &buffer_[j * W] + w);
+    // This rank's pairs (its patches') that hold a non-zero value, each as
+    // (pair index, width values), after their count; every rank's records,
+    // in rank order, written into the pairs. A pair left out is all zeros
+    // (+0 or -0) and its slot on the receiver holds +0 already (zeroed by the
+    // last reduce; no rank writes another rank's pairs): the ordered sum
+    // below starts at +0 and never is -0 (x + -x = +0 when rounding to
+    // nearest), and s + (+-0) = s for every s != -0, so leaving a zero pair
+    // out gives the same bits. Only the pairs a rank's particles reached
+    // travel (before: every pair of the rank, ~9,245 band nodes x 14 doubles
+    // per reduce on spheres.ups, whether or not a particle was near the cut).
+    send_.assign(1, 0.0);
+    std::size_t records = 0;
+    for (std::size_t j = 0; j < pair_patch_.size(); ++j) {
+      if (owner_[std::size_t(pair_patch_[j])] != me_) continue;
+      const double* q = &buffer_[j * W];
+      bool any = false;
+      for (std::size_t c = 0; c < w; ++c) any = any || q[c] != 0.0;
+      if (!any) continue;
+      send_.push_back(double(j));  // exact: pair indices < 2^53
+      send_.insert(send_.end(), q, q + w);
+      ++records;
+    }
+    send_[0] = double(records);
+    sent_records_ = records;
     const std::vector<double> all = gather_(send_);
     std::size_t at = 0;
-    const int ranks = owner_.empty() ? 1 : *std::max_element(owner_.begin(), owner_.end()) + 1;
-    for (int r = 0; r < ranks; ++r)
-      for (std::size_t j = 0; j < pair_patch_.size(); ++j)
-        if (owner_[std::size_t(pair_patch_[j])] == r) {
-          if (at + w > all.size()) throw std::logic_error("PatchBand: the ranks gathered other band sizes");
-          std::copy(all.begin() + long(at), all.begin() + long(at + w), &buffer_[j * W]);
-          at += w;
-        }
+    // One chunk per rank (a rank without patches or reached pairs sends its count 0).
+    while (at < all.size()) {
+      const std::size_t n = std::size_t(all[at++]);
+      for (std::size_t k = 0; k < n; ++k) {
+        if (at + 1 + w > all.size()) throw std::logic_error("PatchBand: a band record past the gathered data");
+        const std::size_t j = std::size_t(all[at++]);
+        if (j >= pair_patch_.size()) throw std::logic_error("PatchBand: a band record of an unknown pair");
+        std::copy(all.begin() + long(at), all.begin() + long(at + w), &buffer_[j * W]);
+        at += w;
+      }
+    }
   }
   double s[kMaxWidth];
   for (std::size_t k = 0; k < band_node_.size(); ++k) {

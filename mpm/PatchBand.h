@@ -26,7 +26,8 @@
 //
 // After a scatter, reduce() adds the partials of every band node in
 // ascending patch id (on ranks: after gathering the partials of all ranks'
-// patches, one MPI_Allgatherv of the band pairs only) and hands the sum to
+// patches, one MPI_Allgatherv of the band pairs that hold a non-zero value,
+// as (pair index, values) records) and hands the sum to
 // the caller, who writes it into its node arrays (whose band entries no
 // particle wrote); the partials are zeroed for the next scatter.
 //
@@ -70,6 +71,18 @@ class PatchBand {
     }
     return cell_tag_[c];
   }
+  // The node-box test of the per-axis stencils: boxes(n) prepares, for
+  // every node b, whether the box of n x n x n nodes from b (b the lowest
+  // node of a per-axis stencil, AxisStencils.h) holds no band node. Such a
+  // particle writes every one of its nodes directly in the band variant of
+  // a scatter too (slot() < 0 at each), with the same expressions as
+  // without the band: it may skip tag() (3 divisions and floors) and take
+  // the plain path, the same bits. Call outside parallel regions, before
+  // the scatter; n = 0 (flat stencils) builds nothing.
+  void boxes(int n);
+  // boxes(n)'s answer for lowest node b: true when the box holds no band node.
+  bool box_clear(std::size_t b) const { return clear_[b] != 0; }
+
   // Band node index of node gi, or -1.
   int slot(std::size_t gi) const { return node_slot_[gi]; }
   // The partial (width doubles) of band node k for patch P (P's reach box holds the node).
@@ -86,6 +99,10 @@ class PatchBand {
   // sum(gi, s): s the ordered sum (width doubles) at band node gi; the partials are zeroed.
   void reduce(int width, const std::function<void(std::size_t gi, const double* s)>& sum);
 
+  // On ranks: the (pair, values) records this rank sent in the last reduce
+  // (its pairs with a non-zero value; 0 in one process).
+  std::size_t sent_records() const { return sent_records_; }
+
   // Flat node indices of the band (ascending).
   const std::vector<std::size_t>& band_node_index() const { return band_node_; }
 
@@ -97,6 +114,8 @@ class PatchBand {
   std::size_t patches_ = 0;
   std::vector<int> cell_tag_;               // per node-grid cell
   std::vector<int> node_slot_;              // per node
+  std::vector<std::uint8_t> clear_;         // per node: boxes(clear_n_)'s answer
+  int clear_n_ = 0;                         // box size clear_ was built for (0: none / stale)
   std::vector<std::size_t> band_node_;      // band node k -> flat node index
   std::vector<std::uint32_t> pair_first_;   // band node k's pairs: [pair_first_[k], pair_first_[k+1])
   std::vector<int> pair_patch_;             // ascending patch id within a node
@@ -105,6 +124,7 @@ class PatchBand {
   int me_ = 0;
   std::function<std::vector<double>(const std::vector<double>&)> gather_;
   std::vector<double> send_;                // scratch of reduce on ranks
+  std::size_t sent_records_ = 0;
 };
 
 }  // namespace tephra

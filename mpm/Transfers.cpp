@@ -1,5 +1,6 @@
 #include "mpm/Transfers.h"
 
+#include "mpm/BandTag.h"
 #include "mpm/PatchBand.h"
 #include "mpm/shape/AxisStencils.h"
 
@@ -109,13 +110,13 @@ void scatter_particles(const Particles& p, const Stencils& s, const Vec3& body_f
                        PatchBand* band) {
   const std::size_t np = p.size(), nn = g.count();
   const bool stress = g.stress.size() == nn;
-  if (band && !band->active()) band = nullptr;
+  band = band_for_scatter(band, s);
   visit_stencils(s, [&](const auto& view) {
     auto run = [&](auto stress_tag) {
       constexpr bool S = decltype(stress_tag)::value;
       if (band)
         for_each_scatter_particle(s.order, np, [&](std::size_t i) {
-          const int P = band->tag(p.x[i]);
+          const int P = band_tag(*band, view, i, p.x[i]);
           if (P < 0) p2g_particle<S, Force, false>(p, view, body_force, i, g, band, P);
           else p2g_particle<S, Force, true>(p, view, body_force, i, g, band, P);
         });
@@ -149,12 +150,12 @@ void particles_to_grid_and_internal_force(const Particles& p, const Stencils& s,
 
 void compute_internal_force(const Particles& p, const Stencils& s, NodeGrid& g, PatchBand* band) {
   Vec3* fint = g.internal_force.data();
-  if (band && !band->active()) band = nullptr;
+  band = band_for_scatter(band, s);
   visit_stencils(s, [&](const auto& view) {
     for_each_scatter_particle(s.order, p.size(), [&](std::size_t i) {
       // sigma - q I: the artificial bulk viscosity acts in the force only.
       const Mat3 vol_stress = p.volume[i] * (p.stress[i] - p.q[i] * Mat3::Identity());
-      const int P = band ? band->tag(p.x[i]) : -1;
+      const int P = band ? band_tag(*band, view, i, p.x[i]) : -1;
       if (P < 0) {
         view.entries(i, [&](std::size_t gi, double, const Vec3& gr) { fint[gi] -= vol_stress * gr; });
         return;

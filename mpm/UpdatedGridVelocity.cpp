@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "mpm/BandTag.h"
 #include "mpm/PatchBand.h"
 #include "mpm/shape/AxisStencils.h"
 
@@ -34,7 +35,7 @@ void reduce_momentum(PatchBand* band, Vec3* o) {
 void updated_particle_grid_velocity(const Particles& p, const Stencils& s, const NodeGrid& g, double dt,
                                     const std::vector<std::size_t>* canonical, std::vector<Vec3>& out,
                                     PatchBand* band) {
-  if (band && !band->active()) band = nullptr;
+  band = band_for_scatter(band, s);
   const std::size_t nodes = g.mass.size();
   out.assign(nodes, Vec3::Zero());
   // sum m_p S_gp v_p^{n+1}, in the scatter order of P2G (ScatterOrder.h: the
@@ -46,7 +47,7 @@ void updated_particle_grid_velocity(const Particles& p, const Stencils& s, const
       Vec3 a = Vec3::Zero();
       view.weights(i, [&](std::size_t gi, double wk) { a += wk * acc[gi]; });
       const Vec3 momentum = p.mass[i] * (p.v[i] + dt * a);
-      scatter_momentum(view, i, momentum, o, band, band ? band->tag(p.x[i]) : -1);
+      scatter_momentum(view, i, momentum, o, band, band ? band_tag(*band, view, i, p.x[i]) : -1);
     });
   });
   reduce_momentum(band, o);
@@ -109,13 +110,26 @@ std::size_t usl_needed_nodes(const NodeGrid& g, double limit, double cell_volume
 void updated_particle_grid_velocity_at(const Particles& p, const Stencils& s, const NodeGrid& g, double dt,
                                        const std::vector<unsigned char>& needed, std::vector<Vec3>& out,
                                        PatchBand* band) {
-  if (band && !band->active()) band = nullptr;
+  band = band_for_scatter(band, s);
   const std::size_t nodes = g.mass.size();
   out.resize(nodes);
   Vec3* o = out.data();
 #pragma omp parallel for schedule(static) if (nodes >= 4096)
   for (std::size_t n = 0; n < nodes; ++n) o[n].setZero();  // threaded zero fill (same bits)
-  if (std::find(needed.begin(), needed.end(), 1) == needed.end()) return;
+  // No needed node here: nothing to sum. But the band reduce below is
+  // collective on ranks (PatchBand::reduce gathers every rank's partials), and
+  // whether a rank has a needed node is its own answer: a rank whose node box
+  // is the whole grid can have none while a rank without patches (empty box,
+  // V_g = 0 at every node) needs them all. So with a band every rank still
+  // takes part in the reduce (its partials are zero: a particle reaches only
+  // nodes of its rank's box, where every rank holds the same V_g and so the
+  // same needed flags), else the others wait for it for ever (issue 7: the
+  // 4-rank hang with fewer patches than ranks).
+  const bool any_needed = std::find(needed.begin(), needed.end(), 1) != needed.end();
+  if (!any_needed) {
+    reduce_momentum(band, o);  // every rank's band partials are zero then (no particle reaches a needed node)
+    return;
+  }
   // The scatter order of P2G (ScatterOrder.h), threaded; the particles whose
   // stencil reaches no needed node are skipped.
   const Vec3* acc = g.acceleration.data();
@@ -128,7 +142,7 @@ void updated_particle_grid_velocity_at(const Particles& p, const Stencils& s, co
       Vec3 a = Vec3::Zero();
       view.weights(i, [&](std::size_t gi, double wk) { a += wk * acc[gi]; });
       const Vec3 momentum = p.mass[i] * (p.v[i] + dt * a);
-      scatter_momentum(view, i, momentum, o, band, band ? band->tag(p.x[i]) : -1);
+      scatter_momentum(view, i, momentum, o, band, band ? band_tag(*band, view, i, p.x[i]) : -1);
     });
   });
   reduce_momentum(band, o);

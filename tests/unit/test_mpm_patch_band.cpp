@@ -14,7 +14,10 @@
 //     some band node (the mutation the test must catch: the order matters);
 //   * the band result does not depend on the storage order of the particles
 //     (shuffled, as migration appends arrivals) nor on the thread count;
-//   * the band lies where two patches' reach boxes meet (a closed count).
+//   * the band lies where two patches' reach boxes meet (a closed count);
+//   * PatchBand::boxes(n) (the node-box test that lets a per-axis stencil
+//     skip tag(), mpm/BandTag.h) answers, at every node b, exactly "no band
+//     node in [b, b + n - 1] per axis" (brute force over the box), n = 2, 3.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -277,6 +280,37 @@ TEST(PatchBand, BandIsWhereReachBoxesMeet) {
           EXPECT_EQ(band.slot(g.index(i, j, k)) >= 0, in) << i << " " << j << " " << k << " R " << R;
         }
     EXPECT_EQ(band.band_nodes(), expected);
+  }
+}
+
+// boxes(n) against a brute-force scan of each node's n x n x n box (clipped
+// to the grid): a wrong answer "clear" would send a band particle down the
+// plain path (wrong sums), "not clear" only costs a tag().
+TEST(PatchBand, NodeBoxTestIsTheBruteForceScan) {
+  const Grid L = level();
+  const NodeGrid g = nodes(L);
+  for (int n : {2, 3}) {
+    PatchBand band;
+    band.prepare(L, g, 1);  // reach 1: narrow enough that some boxes miss the band
+    ASSERT_TRUE(band.active());
+    band.boxes(n);
+    std::size_t clear = 0, wrong = 0;
+    for (int k = 0; k < g.n[2]; ++k)
+      for (int j = 0; j < g.n[1]; ++j)
+        for (int i = 0; i < g.n[0]; ++i) {
+          bool hit = false;
+          for (int c = k; c < std::min(k + n, g.n[2]); ++c)
+            for (int b = j; b < std::min(j + n, g.n[1]); ++b)
+              for (int a = i; a < std::min(i + n, g.n[0]); ++a) hit = hit || band.slot(g.index(a, b, c)) >= 0;
+          const bool said = band.box_clear(g.index(i, j, k));
+          wrong += said == hit;
+          clear += said;
+        }
+    EXPECT_EQ(wrong, 0u) << "n = " << n;
+    // Both answers occur (the test sees both branches): the 3 x 2 patches of
+    // 4 x 4 cells leave nodes whose boxes miss the band, and the band itself.
+    EXPECT_GT(clear, 0u) << "n = " << n;
+    EXPECT_LT(clear, g.count()) << "n = " << n;
   }
 }
 
