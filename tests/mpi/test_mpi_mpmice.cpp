@@ -54,6 +54,7 @@
 #include <cmath>
 #include <map>
 #include <set>
+#include <string>
 
 #include "core/deck/DeckLoader.h"
 #include "core/io/OutputFrame.h"
@@ -193,6 +194,9 @@ TEST_P(MpiMpmIce, RanksGiveTheOneRankAnswerToRoundOff) {
   std::set<long long> ever_left;
   Stepper st(*whole.deck);
   double worst_dt = 0, pert_dt = 0, worst_burned = 0, pert_burned = 0, burned = 0;
+  int first_diff_step = -1;  // the diagnostic below
+  double first_diff = 0;
+  std::string first_diff_field;
   for (int n = 0; n < cs.steps; ++n) {
     const double dt = st.next(*whole.c);
     worst_dt = std::max(worst_dt, std::abs(ranks.c->stable_timestep() / whole.c->stable_timestep() - 1));
@@ -211,6 +215,15 @@ TEST_P(MpiMpmIce, RanksGiveTheOneRankAnswerToRoundOff) {
     const std::set<long long> now = own_ids(ranks.c->mpm().materials());
     for (long long id : start_ids)
       if (!now.count(id)) ever_left.insert(id);
+    // Diagnostic (issue 7): the first step and field where 1 and N ranks
+    // differ (every saved particle and cell field and the .dat sums).
+    if (first_diff_step < 0) {
+      FieldDiffs d = frame_differences(frame_of(*whole.c), frame_of(*ranks.c));
+      for (const auto& kv : sum_differences(*whole.c, *ranks.c)) d.insert(kv);
+      for (const auto& [key, v] : d)
+        if (v > first_diff) first_diff = v, first_diff_field = key.first + " material " + std::to_string(key.second);
+      if (first_diff > 0) first_diff_step = st.step;
+    }
     if (const SolidBurnModel* b = burn_of(*whole.c)) {
       const double w = whole.c->reductions({"totalMassBurned"})["totalMassBurned"][0];
       const double r = ranks.c->reductions({"totalMassBurned"})["totalMassBurned"][0];
@@ -244,6 +257,12 @@ TEST_P(MpiMpmIce, RanksGiveTheOneRankAnswerToRoundOff) {
     std::printf("[ mpi-mpmice ] %s %s %d steps on %d rank(s): fields %.3g, sums %.3g (worst difference / round-off sensitivity), totalMassBurned %.3g "
                 "(1-ulp-perturbed %.3g; burned %.6g kg), %g particles changed rank\n",
                 cs.deck, cs.patches, cs.steps, world_ranks().size, fields, sums, worst_burned, pert_burned, burned, migrated);
+  if (world_ranks().is_root()) {
+    if (first_diff_step < 0) std::printf("[ mpi-mpmice ] %s: 1 and %d rank(s) the same bits after every step\n", cs.deck, world_ranks().size);
+    else
+      std::printf("[ mpi-mpmice ] %s: 1 and %d rank(s) first differ after step %d, largest in %s (%.3g of its max)\n", cs.deck,
+                  world_ranks().size, first_diff_step, first_diff_field.c_str(), first_diff);
+  }
   if (world_ranks().is_root() && ranks.c->mpm().layout().distributed) {
     std::printf("[ mpi-mpmice ] patch owners:");
     for (int o : ranks.c->mpm().layout().owner) std::printf(" %d", o);
