@@ -20,7 +20,14 @@
 // well, and the one-process particle order inside every patch after
 // migration: not done, docs/parallel.md).
 //
-// What is asserted instead, per field: the distributed answer lies within
+// Session 21: that was done for the MPMICE scatters (mpmice/BandScatter.h:
+// per patch in patch order at the patch-cut band, in one process too, each
+// patch's particles in the scatter order (colour, block, id)), and massX and
+// guni2dRT now give the 1-rank bits in every field, the stable dt and
+// totalMassBurned (EXPECT_EQ, Case::bits); the .dat sums keep MPM's per-rank
+// particle sums (measured 1.7e-14, bound kSumsBound). The round-off
+// comparison below stays as the coarser check of every case.
+// What is asserted, per field: the distributed answer lies within
 // kMargin = 10 times the 1-rank answer's own round-off sensitivity, measured
 // in the same test on a third, whole-level run whose particles are changed by
 // 4 u (perturb_particles: the backward error of the re-associated node sums),
