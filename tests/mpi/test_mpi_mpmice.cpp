@@ -24,9 +24,9 @@
 // per patch in patch order at the patch-cut band, in one process too, each
 // patch's particles in the scatter order (colour, block, id)), and massX and
 // guni2dRT now give the 1-rank bits in every field, the stable dt and
-// totalMassBurned (EXPECT_EQ, Case::bits); the .dat sums keep MPM's per-rank
-// particle sums (measured 1.7e-14, bound kSumsBound). The round-off
-// comparison below stays as the coarser check of every case.
+// totalMassBurned (EXPECT_EQ, Case::bits), and with MPM's particle sums
+// per patch in id order (mpm/MpmComponentOutput.cpp) the .dat sums too. The
+// round-off comparison below stays as the coarser check of every case.
 // What is asserted, per field: the distributed answer lies within
 // kMargin = 10 times the 1-rank answer's own round-off sensitivity, measured
 // in the same test on a third, whole-level run whose particles are changed by
@@ -181,15 +181,8 @@ struct Case {
   const char* deck;
   const char* patches;  // "" = the deck's own
   int steps;
-  bool bits;       // every field the 1-rank bits (session 21: the MPMICE scatters in patch order, mpmice/BandScatter.h)
-  bool sums_bits;  // the .dat sums too (no particle sum split over two ranks)
+  bool bits;  // every field and .dat sum the 1-rank bits (session 21: mpmice/BandScatter.h, MPM's sums per patch)
 };
-
-// The .dat sums of massX and guni2dRT against 1 rank (MPM's per-rank
-// particle sums, above): measured 1.34e-18 (massX TotalMomentum, scaled by
-// sum m |v|) and 1.72e-14 (guni2dRT TotalMass) on 2 ranks (session 21);
-// bound 10x the larger.
-constexpr double kSumsBound = 1.7e-13;
 
 class MpiMpmIce : public ::testing::TestWithParam<Case> {};
 
@@ -268,14 +261,10 @@ TEST_P(MpiMpmIce, RanksGiveTheOneRankAnswerToRoundOff) {
     EXPECT_EQ(worst_dt, 0.0) << "stable dt";
     EXPECT_EQ(worst_burned, 0.0) << "totalMassBurned";
   }
-  // The .dat sums: MPM adds its particles per rank, then the rank partials
-  // in rank order (mpm/MpmComponentOutput.cpp), another order than one
-  // process: bits only where no rank split happens (advect), else the
-  // measured bound kSumsBound.
-  for (const auto& [key, d] : sum_differences(*whole.c, *ranks.c)) {
-    if (cs.sums_bits) EXPECT_EQ(d, 0.0) << key.first;
-    else EXPECT_LE(d, kSumsBound) << key.first;
-  }
+  // The .dat sums (session 21: MPM's particle sums per patch in id order,
+  // then in patch order, mpm/MpmComponentOutput.cpp; ICE's per patch): the 1-rank bits.
+  if (cs.bits)
+    for (const auto& [key, d] : sum_differences(*whole.c, *ranks.c)) EXPECT_EQ(d, 0.0) << key.first;
   if (world_ranks().is_root())
     std::printf("[ mpi-mpmice ] %s %s %d steps on %d rank(s): fields %.3g, sums %.3g (worst difference / round-off sensitivity), totalMassBurned %.3g "
                 "(1-ulp-perturbed %.3g; burned %.6g kg), %g particles changed rank\n",
@@ -295,8 +284,8 @@ TEST_P(MpiMpmIce, RanksGiveTheOneRankAnswerToRoundOff) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Decks, MpiMpmIce,
-                         ::testing::Values(Case{"advect.ups", "[5,1,1]", 20, true, true}, Case{"massX.ups", "[2,2,1]", 5, true, false},
-                                           Case{"guni2dRT.ups", "", 3, true, false}));
+                         ::testing::Values(Case{"advect.ups", "[5,1,1]", 20, true}, Case{"massX.ups", "[2,2,1]", 5, true},
+                                           Case{"guni2dRT.ups", "", 3, true}));
 
 // Checkpoints across rank counts: the archive of the N-rank run restored into
 // a whole-level component (N -> 1) and the 1-rank archive into a distributed
@@ -337,8 +326,8 @@ TEST(MpiMpmIce, CheckpointsRestartAcrossRankCounts) {
   double sums_many = 0, sums_one = 0;
   for (const auto& [key, d] : sum_differences(*one.c, *to_many.c)) sums_many = std::max(sums_many, d);
   for (const auto& [key, d] : sum_differences(*one.c, *to_one.c)) sums_one = std::max(sums_one, d);
-  EXPECT_LE(sums_many, kSumsBound);
-  EXPECT_LE(sums_one, kSumsBound);
+  EXPECT_EQ(sums_many, 0.0);
+  EXPECT_EQ(sums_one, 0.0);
   if (world_ranks().is_root())
     std::printf("[ mpi-mpmice ] restart 1 -> %d ranks: %.3g, %d -> 1: %.3g (sums %.3g, %.3g)\n", world_ranks().size, d_many,
                 world_ranks().size, d_one, sums_many, sums_one);
