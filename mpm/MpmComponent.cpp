@@ -216,8 +216,17 @@ PatchBand* MpmComponent::prepare_band(MpmMaterial& m) {
   const ScatterOrder& o = m.stencils.order;
   int reach = o.built_for(m.particles.size()) ? (m.stencils.axis_nodes ? o.span - 1 : o.span) : 0;
   if (layout_.distributed) reach = int(-layout_.min(-double(reach)));
+  band_request_ = std::max(band_request_, reach);  // monotone: coupling_band(extra) then stops growing the band
   band_.prepare(setup_.grid, m.grid, reach);
   m.stencils.order.sort_blocks_by_id(m.particles.id.data());
+  return &band_;
+}
+
+PatchBand* MpmComponent::coupling_band(int extra) {
+  if (!band_used_ || setup_.materials.empty()) return nullptr;
+  int reach = band_request_ + extra;
+  if (layout_.distributed) reach = int(-layout_.min(-double(reach)));  // the widest over the ranks
+  band_.prepare(setup_.grid, setup_.materials.front().grid, reach);
   return &band_;
 }
 

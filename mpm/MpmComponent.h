@@ -142,6 +142,18 @@ class MpmComponent final : public Component {
   // A whole-grid copy of a node array (width doubles per node) on every rank
   // (RankNodeSums::whole; a collective; `data` itself in one process).
   std::vector<double> whole_node_array(const std::vector<double>& data, int width) const;
+  // MPMICE's particle scatters in patch order (mpm/PatchBand.h; docs/parallel.md
+  // "MPMICE on ranks"): this step's band widened by `extra` nodes beyond the
+  // reach of MPM's stencils (a burn's cell shares land one node below the
+  // stencil, a projection of moved particles as far as they move), the same
+  // on every rank; null when MPM does not use the band (one patch, periodic,
+  // axisymmetric), whose scatters then keep their per-rank sums. The band
+  // only grows: MPM's own band sums stay exact with a wider band.
+  PatchBand* coupling_band(int extra);
+  // A band-summed node array (PatchBand::reduce written into it) combined
+  // over the ranks with one non-zero contribution per node (0 + x = x: the
+  // one-process bits); no-op in one process.
+  void sum_band_node_doubles(double* data, int width);
 
  private:
   double material_stable_timestep(const MpmMaterial& m) const;
@@ -199,6 +211,7 @@ class MpmComponent final : public Component {
   PatchBand band_;
   bool band_used_ = false;                 // the last prepare_band set it up (P2G, f_int, MUSL use it)
   PatchBand* prepare_band(MpmMaterial& m); // this step's band for m's stencils; null when not used
+  int band_request_ = 0;                   // the reach the last prepare_band asked for (coupling_band adds to it)
   PatchBand* band() { return band_used_ ? &band_ : nullptr; }
   // On ranks, before combining a band-summed array: every band node kept only
   // on the lowest rank whose box holds it, 0 elsewhere, so the combine adds

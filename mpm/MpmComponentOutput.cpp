@@ -4,6 +4,8 @@
 #include "mpm/MpmComponent.h"
 
 #include <algorithm>
+#include <array>
+#include <tuple>
 #include <stdexcept>
 
 #include "core/parallel/Ranks.h"
@@ -227,29 +229,63 @@ void MpmComponent::fill_output(const std::set<std::string>& labels, OutputFrame&
 std::map<std::string, std::vector<double>> MpmComponent::reductions(const std::set<std::string>& labels) const {
   double ke = 0, se = 0, mass = 0;
   Vec3 mom = Vec3::Zero(), mx = Vec3::Zero();
-  for (const MpmMaterial& m : setup_.materials) {
-    const Particles& p = m.particles;
-    for (std::size_t i = 0; i < p.size(); ++i) {
-      ke += 0.5 * p.mass[i] * p.v[i].squaredNorm();
-      se += p.energy_density[i] * p.volume0[i];
-      mass += p.mass[i];
-      mom += p.mass[i] * p.v[i];
-      mx += p.mass[i] * p.x[i];
+  const bool thermal_sum = labels.count("ThermalEnergy") > 0;
+  double thermal = 0.0;  // ThermalEnergy = sum m_p c_v T_p
+  if (laid_out_ && setup_.grid.patches.size() > 1 && !setup_.materials.empty()) {
+    // Several patches (session 21, issue 7): one partial per patch, its
+    // particles material by material in ascending id, the partials added in
+    // ascending patch id (PatchLayout::ordered_sum). A particle lives on the
+    // rank of its patch (patch_of, migration after G2P) and the order of
+    // the terms depends on ids and positions only, so one process and any
+    // number of ranks add the same terms in the same order: the same bits
+    // (before: storage order, and per rank then in rank order on ranks).
+    const std::size_t np = setup_.grid.patches.size();
+    std::vector<std::array<double, 10>> part(np);
+    for (auto& a : part) a.fill(0.0);
+    for (const MpmMaterial& m : setup_.materials) {
+      const Particles& p = m.particles;
+      std::vector<std::tuple<int, long long, std::size_t>> key(p.size());
+      for (std::size_t i = 0; i < p.size(); ++i) key[i] = {patch_of(p.x[i]), p.id[i], i};
+      std::sort(key.begin(), key.end());
+      for (const auto& [P, id, i] : key) {
+        std::array<double, 10>& a = part[std::size_t(P)];
+        a[0] += 0.5 * p.mass[i] * p.v[i].squaredNorm();
+        a[1] += p.energy_density[i] * p.volume0[i];
+        a[2] += p.mass[i];
+        Eigen::Map<Vec3>(&a[3]) += p.mass[i] * p.v[i];
+        Eigen::Map<Vec3>(&a[6]) += p.mass[i] * p.x[i];
+        if (thermal_sum) a[9] += p.mass[i] * m.specific_heat * p.temperature[i];
+      }
     }
-  }
-  double thermal = 0.0;  // ThermalEnergy = sum m_p c_v T_p (below)
-  if (labels.count("ThermalEnergy"))
-    for (const MpmMaterial& m : setup_.materials)
-      for (std::size_t i = 0; i < m.particles.size(); ++i)
-        thermal += m.particles.mass[i] * m.specific_heat * m.particles.temperature[i];
-  if (layout_.distributed) {
-    // On MPI ranks: each rank's partial sums added in rank order (the same
-    // bits on every rank; against one process the order of the terms differs).
-    const std::vector<double> total = layout_.ordered_sum(
-        {PatchPartial{world_ranks().rank, {ke, se, mass, mom[0], mom[1], mom[2], mx[0], mx[1], mx[2], thermal}}}, 10);
+    std::vector<char> own(np, 0);
+    for (int P : layout_.own) own[std::size_t(P)] = 1;
+    for (std::size_t P = 0; P < np; ++P)
+      if (!own[P] && part[P][2] != 0.0)
+        throw std::logic_error("MPM reductions: particles of patch " + std::to_string(P) + " on a rank that does not own it");
+    std::vector<PatchPartial> partials;
+    for (int P : layout_.own) {
+      const std::array<double, 10>& a = part[std::size_t(P)];
+      partials.push_back({P, std::vector<double>(a.begin(), a.end())});
+    }
+    const std::vector<double> total = layout_.ordered_sum(partials, 10);
     ke = total[0], se = total[1], mass = total[2], thermal = total[9];
     mom = Vec3(total[3], total[4], total[5]);
     mx = Vec3(total[6], total[7], total[8]);
+  } else {
+    for (const MpmMaterial& m : setup_.materials) {
+      const Particles& p = m.particles;
+      for (std::size_t i = 0; i < p.size(); ++i) {
+        ke += 0.5 * p.mass[i] * p.v[i].squaredNorm();
+        se += p.energy_density[i] * p.volume0[i];
+        mass += p.mass[i];
+        mom += p.mass[i] * p.v[i];
+        mx += p.mass[i] * p.x[i];
+      }
+    }
+    if (thermal_sum)
+      for (const MpmMaterial& m : setup_.materials)
+        for (std::size_t i = 0; i < m.particles.size(); ++i)
+          thermal += m.particles.mass[i] * m.specific_heat * m.particles.temperature[i];
   }
   std::map<std::string, std::vector<double>> out;
   if (labels.count("KineticEnergy")) out["KineticEnergy"] = {ke};

@@ -223,6 +223,12 @@ void MpmComponent::keep_band_on_one_rank(double* data, int width) {
   }
 }
 
+void MpmComponent::sum_band_node_doubles(double* data, int width) {
+  if (!layout_.distributed || data == nullptr) return;
+  keep_band_on_one_rank(data, width);
+  node_sums_.combine({{data, width, -1}});
+}
+
 void MpmComponent::sum_node_vectors(std::vector<Vec3>& v) {
   if (!layout_.distributed || v.empty()) return;
   node_sums_.combine({{v.front().data(), 3, -1}});

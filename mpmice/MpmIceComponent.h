@@ -73,8 +73,9 @@ class MpmIceComponent final : public Component, private MpmCoupling, private Sol
   void reactant_particles(std::size_t s, std::vector<BurnParticle>& out) const override;
   void exchange_cell_halo(CellScalars& f) override { ice_->exchange_halo(f); }
   // MPI ranks: burned cell shares of other ranks' cells to their owners (ParticleBurn.cpp).
-  void send_burned_shares(const std::vector<int>& patch_of, std::vector<double>& mass, std::vector<Vec3>& momentum,
-                          std::vector<double>& energy) const;
+  // in_band: cells whose sums every rank holds whole already (mpmice/BandScatter.h): not sent.
+  void send_burned_shares(const std::vector<int>& patch_of, const std::vector<char>& in_band, std::vector<double>& mass,
+                          std::vector<Vec3>& momentum, std::vector<double>& energy) const;
 
   std::unique_ptr<MpmComponent> mpm_;
   std::unique_ptr<IceComponent> ice_;

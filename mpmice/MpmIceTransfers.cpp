@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "core/grid/Loop.h"
+#include "mpmice/BandScatter.h"
 #include "mpmice/CellProjection.h"
 #include "mpmice/MpmIceComponent.h"
 #include "mpmice/NodeAverages.h"
@@ -56,11 +57,20 @@ void MpmIceComponent::solid_state_to_cells() {
     const Stencils& st = mm.stencils;
     std::vector<double>& mT = node_mT_;  // sum m_p T_p S_gp (buffer kept across steps)
     mT.assign(ng.count(), 0.0);
+    // In patch order at the band nodes (mpmice/BandScatter.h): the same bits on any rank count.
+    PatchBand* band = mpm_->coupling_band(1);
     visit_stencils(st, [&](const auto& view) {
-      for (std::size_t i = 0; i < p.size(); ++i)
-        view.weights(i, [&](std::size_t gi, double w) { mT[gi] += p.mass[i] * p.temperature[i] * w; });
+      for_each_coupling_particle(st, p.size(), band, [&](std::size_t i) {
+        const int P = coupling_tag(band, p.x[i]);
+        view.weights(i, [&](std::size_t gi, double w) { *band_target(band, P, gi, 0, &mT[gi]) += p.mass[i] * p.temperature[i] * w; });
+      });
     });
-    mpm_->sum_node_doubles(mT);  // over the MPI ranks (no-op in one process)
+    if (band) {
+      band->reduce(1, [&](std::size_t gi, const double* q) { mT[gi] = q[0]; });
+      mpm_->sum_band_node_doubles(mT.data(), 1);  // over the MPI ranks, one contribution per node
+    } else {
+      mpm_->sum_node_doubles(mT);  // over the MPI ranks (no-op in one process)
+    }
     // T_g = sum m_p T_p S_gp / m_g, kept for output (g.temperature).
     node_temperature_.resize(mpm_->materials().size());
     node_temperature_[s].assign(ng.count(), 0.0);
@@ -191,13 +201,23 @@ void MpmIceComponent::add_internal_forces() {
     const Stencils& st = mm.stencils;
     const std::vector<double>& pp = particle_pressure_[s];
     std::vector<Vec3> pressure_force(mm.grid.count(), Vec3::Zero());
+    // In patch order at the band nodes (mpmice/BandScatter.h): the same bits on any rank count.
+    PatchBand* band = mpm_->coupling_band(1);
     visit_stencils(st, [&](const auto& view) {
-      for (std::size_t i = 0; i < mm.particles.size(); ++i) {
+      for_each_coupling_particle(st, mm.particles.size(), band, [&](std::size_t i) {
         const double vp = mm.particles.volume[i] * pp[i];
-        view.entries(i, [&](std::size_t gi, double, const Vec3& grad) { pressure_force[gi] -= vp * grad; });
-      }
+        const int P = coupling_tag(band, mm.particles.x[i]);
+        view.entries(i, [&](std::size_t gi, double, const Vec3& grad) {
+          Eigen::Map<Vec3>(band_target(band, P, gi, 0, pressure_force[gi].data())) -= vp * grad;
+        });
+      });
     });
-    mpm_->sum_node_vectors(pressure_force);  // over the MPI ranks (no-op in one process)
+    if (band) {
+      band->reduce(3, [&](std::size_t gi, const double* q) { pressure_force[gi] = Eigen::Map<const Vec3>(q); });
+      mpm_->sum_band_node_doubles(pressure_force.front().data(), 3);
+    } else {
+      mpm_->sum_node_vectors(pressure_force);  // over the MPI ranks (no-op in one process)
+    }
     for (std::size_t gi = 0; gi < pressure_force.size(); ++gi) mm.grid.internal_force[gi] += pressure_force[gi];
   }
 }

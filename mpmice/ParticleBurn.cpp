@@ -37,6 +37,7 @@
 #include "core/parallel/Ranks.h"
 #include "mpm/SymmetryFold.h"
 #include "mpm/shape/AxisStencils.h"
+#include "mpmice/BandScatter.h"
 #include "mpmice/CellProjection.h"
 #include "mpmice/MpmIceComponent.h"
 
@@ -128,28 +129,41 @@ void MpmIceComponent::burn_particles(std::size_t s, const CellScalars& dm, Burne
       any = any || dm[pi](c) > 0;
     });
   if (!mpm_->layout().any(any)) return;  // every MPI rank takes the same branch (collectives below)
-  // The interior cells that share node gi (up to 8), with the node's weight.
+  // The interior cells that share node gi (up to 8), with the node's weight
+  // and the flat index of the cell's lower corner node (where a band keeps the cell's partials).
   auto for_node_cells = [&](std::size_t gi, auto&& fn) {
     const std::size_t nx = std::size_t(ng.n[0]), ny = std::size_t(ng.n[1]);
     const IntVec3 node(int(gi % nx), int((gi / nx) % ny), int(gi / (nx * ny)));
     const double w = node_cell_weight(ng, symmetric, node);
     for (int q = 0; q < 8; ++q) {
-      const IntVec3 c = node - off - IntVec3(q & 1, (q >> 1) & 1, (q >> 2) & 1);
+      const IntVec3 corner = node - IntVec3(q & 1, (q >> 1) & 1, (q >> 2) & 1);
+      const IntVec3 c = corner - off;
       if ((c.array() < 0).any() || (c.array() >= nc.array()).any()) continue;
-      fn(flat(c), w);
+      fn(flat(c), w, ng.index(corner));
     }
   };
+  // Node and cell sums in patch order at the band nodes (mpmice/BandScatter.h):
+  // the same bits on any rank count.
+  PatchBand* band = mpm_->coupling_band(1);
   // M'_c = sum_p m_p W_c(x_p), from the unfolded node sums m'_n = sum_p m_p S_np.
   std::vector<double> m_unfolded(ng.count(), 0.0);
   visit_stencils(mm.stencils, [&](const auto& view) {
-    for (std::size_t i = 0; i < p.size(); ++i)
-      view.weights(i, [&](std::size_t gi, double S) { m_unfolded[gi] += p.mass[i] * S; });
+    for_each_coupling_particle(mm.stencils, p.size(), band, [&](std::size_t i) {
+      const int P = coupling_tag(band, p.x[i]);
+      view.weights(i, [&](std::size_t gi, double S) { *band_target(band, P, gi, 0, &m_unfolded[gi]) += p.mass[i] * S; });
+    });
   });
   // MPI ranks: the node sums of every rank's particles, at the nodes of the
   // rank's box (which holds its own cells' corners); no-ops in one process.
-  mpm_->sum_node_doubles(m_unfolded);  std::vector<double> Mc(ncell, 0.0);
+  if (band) {
+    band->reduce(1, [&](std::size_t gi, const double* q) { m_unfolded[gi] = q[0]; });
+    mpm_->sum_band_node_doubles(m_unfolded.data(), 1);
+  } else {
+    mpm_->sum_node_doubles(m_unfolded);
+  }
+  std::vector<double> Mc(ncell, 0.0);
   for (std::size_t gi = 0; gi < ng.count(); ++gi)
-    if (m_unfolded[gi] > 0) for_node_cells(gi, [&](std::size_t c, double w) { Mc[c] += w * m_unfolded[gi]; });
+    if (m_unfolded[gi] > 0) for_node_cells(gi, [&](std::size_t c, double w, std::size_t) { Mc[c] += w * m_unfolded[gi]; });
   std::vector<double> f(ncell, 0.0);
   for (std::size_t c = 0; c < ncell; ++c)
     if (dmc[c] > 0 && Mc[c] > 0) f[c] = std::min(dmc[c] / Mc[c], 1.0);
@@ -166,7 +180,7 @@ void MpmIceComponent::burn_particles(std::size_t s, const CellScalars& dm, Burne
   // phi_n = w_n sum_{c ∋ n} f_c.
   std::vector<double> phi(ng.count(), 0.0);
   for (std::size_t gi = 0; gi < ng.count(); ++gi)
-    if (m_unfolded[gi] > 0) for_node_cells(gi, [&](std::size_t c, double w) { phi[gi] += w * f[c]; });
+    if (m_unfolded[gi] > 0) for_node_cells(gi, [&](std::size_t c, double w, std::size_t) { phi[gi] += w * f[c]; });
 
   // The particles: their loss, its cell shares, and the node sums of the loss.
   NodeGrid& d = burn_grid_;
@@ -178,11 +192,15 @@ void MpmIceComponent::burn_particles(std::size_t s, const CellScalars& dm, Burne
   d.reset();
   std::vector<double> cell_mass(ncell, 0.0), cell_energy(ncell, 0.0);
   std::vector<Vec3> cell_mom(ncell, Vec3::Zero());
+  // Band partial columns (mpmice/BandScatter.h): at a node, the removed m (0),
+  // m v (1-3), m b (4-6) and V (7); at a cell's lower corner node, the
+  // cell's share of mass (8), momentum (9-11) and energy (12).
   visit_stencils(mm.stencils, [&](const auto& view) {
-    for (std::size_t i = 0; i < p.size(); ++i) {
+    for_each_coupling_particle(mm.stencils, p.size(), band, [&](std::size_t i) {
       double a = 0;
       view.weights(i, [&](std::size_t gi, double S) { a += S * phi[gi]; });
-      if (!(a > 0)) continue;
+      if (!(a > 0)) return;
+      const int P = coupling_tag(band, p.x[i]);
       const double m0 = p.mass[i];
       double dmp = std::min(a * m0, m0);
       if (m0 - dmp <= min_mass) dmp = m0;
@@ -191,33 +209,64 @@ void MpmIceComponent::burn_particles(std::size_t s, const CellScalars& dm, Burne
       const double e = cv * p.temperature[i];
       view.weights(i, [&](std::size_t gi, double S) {
         if (!(phi[gi] > 0)) return;
-        for_node_cells(gi, [&](std::size_t c, double w) {
+        for_node_cells(gi, [&](std::size_t c, double w, std::size_t corner) {
           if (!(f[c] > 0)) return;
           const double share = scale * S * w * f[c];
-          cell_mass[c] += share;
-          cell_mom[c] += share * v;
-          cell_energy[c] += share * e;
+          *band_target(band, P, corner, 8, &cell_mass[c]) += share;
+          Eigen::Map<Vec3>(band_target(band, P, corner, 9, cell_mom[c].data())) += share * v;
+          *band_target(band, P, corner, 12, &cell_energy[c]) += share * e;
         });
-        d.mass[gi] += dmp * S;
-        d.velocity[gi] += dmp * S * v;  // momentum until the fold below
-        d.external_force[gi] += dmp * S * gravity;
+        *band_target(band, P, gi, 0, &d.mass[gi]) += dmp * S;
+        Eigen::Map<Vec3>(band_target(band, P, gi, 1, d.velocity[gi].data())) += dmp * S * v;  // momentum until the fold below
+        Eigen::Map<Vec3>(band_target(band, P, gi, 4, d.external_force[gi].data())) += dmp * S * gravity;
       });
       const double ratio = dmp == m0 ? 0.0 : (m0 - dmp) / m0;
       const double dV = p.volume[i] * (1 - ratio);
-      view.weights(i, [&](std::size_t gi, double S) { d.volume[gi] += dV * S; });
+      view.weights(i, [&](std::size_t gi, double S) { *band_target(band, P, gi, 7, &d.volume[gi]) += dV * S; });
       p.mass[i] = m0 - dmp;
       if (dmp == m0) p.mass[i] = 0.0;
       p.volume[i] *= ratio;
       p.volume0[i] *= ratio;
-    }
+    });
   });
   // MPI ranks: the removed sums of every rank's particles, and the shares of
-  // cells another rank owns sent to it.
-  mpm_->sum_node_doubles(d.mass);
-  mpm_->sum_node_vectors(d.velocity);
-  mpm_->sum_node_vectors(d.external_force);
-  mpm_->sum_node_doubles(d.volume);
-  if (mpm_->layout().distributed) send_burned_shares(patch_of, cell_mass, cell_mom, cell_energy);
+  // cells another rank owns sent to it. With a band, every rank holds the
+  // whole ordered sum at a band node after reduce (a cell there is not
+  // sent: its owner has it); any other node or cell is reached by the
+  // particles of one patch only, so its one rank's value is the sum.
+  if (band) {
+    band->reduce(13, [&](std::size_t gi, const double* q) {
+      d.mass[gi] = q[0];
+      d.velocity[gi] = Eigen::Map<const Vec3>(q + 1);
+      d.external_force[gi] = Eigen::Map<const Vec3>(q + 4);
+      d.volume[gi] = q[7];
+      const std::size_t nx = std::size_t(ng.n[0]), ny = std::size_t(ng.n[1]);
+      const IntVec3 c = IntVec3(int(gi % nx), int((gi / nx) % ny), int(gi / (nx * ny))) - off;
+      if ((c.array() < 0).any() || (c.array() >= nc.array()).any()) return;
+      cell_mass[flat(c)] = q[8];
+      cell_mom[flat(c)] = Eigen::Map<const Vec3>(q + 9);
+      cell_energy[flat(c)] = q[12];
+    });
+    mpm_->sum_band_node_doubles(d.mass.data(), 1);
+    mpm_->sum_band_node_doubles(d.velocity.front().data(), 3);
+    mpm_->sum_band_node_doubles(d.external_force.front().data(), 3);
+    mpm_->sum_band_node_doubles(d.volume.data(), 1);
+  } else {
+    mpm_->sum_node_doubles(d.mass);
+    mpm_->sum_node_vectors(d.velocity);
+    mpm_->sum_node_vectors(d.external_force);
+    mpm_->sum_node_doubles(d.volume);
+  }
+  if (mpm_->layout().distributed) {
+    std::vector<char> in_band(ncell, 0);  // cells whose lower corner node is a band node
+    if (band)
+      for (std::size_t c = 0; c < ncell; ++c) {
+        const IntVec3 cell(int(c % std::size_t(nc[0])), int((c / std::size_t(nc[0])) % std::size_t(nc[1])),
+                           int(c / (std::size_t(nc[0]) * nc[1])));
+        in_band[c] = band->slot(ng.index(cell + off)) >= 0;
+      }
+    send_burned_shares(patch_of, in_band, cell_mass, cell_mom, cell_energy);
+  }
   // Fold the removed sums as P2G folds its sums (symmetry planes), then take
   // them out of this step's node sums.
   for (std::size_t gi = 0; gi < d.count(); ++gi)
@@ -255,14 +304,19 @@ void MpmIceComponent::burn_particles(std::size_t s, const CellScalars& dm, Burne
 // The burned shares of interior cells this rank does not own (patch_of < 0),
 // flat index i + nx (j + ny k), go to the owning ranks (one all-to-all), which
 // add them to their own: records (cell, mass, momentum x3, energy).
-void MpmIceComponent::send_burned_shares(const std::vector<int>& patch_of, std::vector<double>& mass,
-                                         std::vector<Vec3>& momentum, std::vector<double>& energy) const {
+void MpmIceComponent::send_burned_shares(const std::vector<int>& patch_of, const std::vector<char>& in_band,
+                                         std::vector<double>& mass, std::vector<Vec3>& momentum,
+                                         std::vector<double>& energy) const {
   const PatchLayout& layout = ice_->layout();
   const IntVec3 nc = layout.level.cells;
   const Ranks r = world_ranks();
   std::vector<std::vector<double>> send(std::size_t(r.size));
   for (std::size_t c = 0; c < mass.size(); ++c) {
     if (patch_of[c] >= 0 || !(mass[c] > 0)) continue;
+    if (in_band[c]) {  // the owner holds the whole sum already (PatchBand::reduce)
+      mass[c] = 0, momentum[c] = Vec3::Zero(), energy[c] = 0;
+      continue;
+    }
     const IntVec3 cell(int(c % std::size_t(nc[0])), int((c / std::size_t(nc[0])) % std::size_t(nc[1])),
                        int(c / (std::size_t(nc[0]) * nc[1])));
     const int p = layout.level.patch_owning_cell(cell);

@@ -19,6 +19,7 @@
 // (partition of unity) - except next to a symmetry plane normal to d, whose
 // doubled node weights do not (the mirror particles are not moved).
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 #include <vector>
 
@@ -26,6 +27,8 @@
 #include "mpm/SymmetryFold.h"
 #include "mpm/shape/AxisStencils.h"
 #include "mpm/shape/AxisShape.h"
+#include "core/parallel/Ranks.h"
+#include "mpmice/BandScatter.h"
 #include "mpmice/CellProjection.h"
 #include "mpmice/MpmIceComponent.h"
 
@@ -78,23 +81,22 @@ struct AxisFactors {
     return ok;
   }
 
-  // m_g = sum_p m_p S_gp, particle by particle in index order and each
-  // particle's nodes x fastest (the order of visit_stencils, so the same sums).
-  template <int NN>
-  void scatter_mass(const std::vector<double>& mass, const NodeGrid& sg, std::vector<double>& m) const {
+  // m_g += m_i S_gp for particle i, its nodes x fastest (the order of
+  // visit_stencils, so the same sums); at(gi) the entry to add to
+  // (mpmice/BandScatter.h: the node, or a band partial).
+  template <int NN, class At>
+  void scatter_mass(std::size_t i, double mass, const NodeGrid& sg, At&& at) const {
     const std::size_t sy = std::size_t(sg.n[0]), sz = std::size_t(sg.n[0]) * std::size_t(sg.n[1]);
-    for (std::size_t i = 0; i < mass.size(); ++i) {
-      const double* X = S[0].data() + i * NN;
-      const double* Y = S[1].data() + i * NN;
-      const double* Z = S[2].data() + i * NN;
-      const std::size_t base = sg.index(first[0][i], first[1][i], first[2][i]);
-      for (int c = 0; c < NN; ++c)
-        for (int b = 0; b < NN; ++b) {
-          const std::size_t row = base + sy * std::size_t(b) + sz * std::size_t(c);
-          const double y = Y[b], z = Z[c];
-          for (int a = 0; a < NN; ++a) m[row + std::size_t(a)] += mass[i] * (X[a] * y * z);
-        }
-    }
+    const double* X = S[0].data() + i * NN;
+    const double* Y = S[1].data() + i * NN;
+    const double* Z = S[2].data() + i * NN;
+    const std::size_t base = sg.index(first[0][i], first[1][i], first[2][i]);
+    for (int c = 0; c < NN; ++c)
+      for (int b = 0; b < NN; ++b) {
+        const std::size_t row = base + sy * std::size_t(b) + sz * std::size_t(c);
+        const double y = Y[b], z = Z[c];
+        for (int a = 0; a < NN; ++a) *at(row + std::size_t(a)) += mass * (X[a] * y * z);
+      }
   }
 };
 
@@ -114,6 +116,21 @@ void sum_cell_array_over_ranks(MpmComponent& mpm, const IndexRange& cells, const
   each([](double& cell, double& node) { node = cell; });
   mpm.sum_node_doubles(nodes);
   each([](double& cell, double& node) { cell = node; });
+}
+
+// dM (flat over the cells with extra cells, CellIndex) on every rank: each
+// cell's value from the rank owning its patch (g: this rank's patches; one
+// all-gather of (cell, value) pairs).
+void gather_own_cells(const Grid& g, const CellIndex& ci, std::vector<double>& dM) {
+  std::vector<double> mine;
+  for (const Patch& patch : g.patches)
+    for_each_cell_serial(patch.cells_with_extra(), [&](int i, int j, int k) {
+      const std::size_t c = ci(IntVec3(i, j, k));
+      mine.insert(mine.end(), {double(c), dM[c]});
+    });
+  const std::vector<double> all = all_gather(mine);
+  std::fill(dM.begin(), dM.end(), 0.0);
+  for (std::size_t k = 0; k + 2 <= all.size(); k += 2) dM[std::size_t(all[k])] = all[k + 1];
 }
 
 }  // namespace
@@ -138,12 +155,41 @@ void MpmIceComponent::solid_mass_fluxes(double dt) {
     const Particles& p = mm.particles;
     const IntVec3 off = node_offset(g, ng);
     const std::array<bool, 6> symmetric = symmetry_faces(mm.bcs);
+    std::vector<double> node_mass;
     // d_p = dt sum_g S_gp v_g.
     std::vector<Vec3> disp(p.size(), Vec3::Zero());
+    double moved_cells = 0;  // the largest |d_p| along an axis, in cells
     visit_stencils(mm.stencils, [&](const auto& view) {
-      for (std::size_t i = 0; i < p.size(); ++i)
+      for (std::size_t i = 0; i < p.size(); ++i) {
         view.weights(i, [&](std::size_t gi, double w) { disp[i] += dt * w * ng.velocity[gi]; });
+        for (int d = 0; d < 3; ++d) moved_cells = std::max(moved_cells, std::abs(disp[i][d]) / ng.h[d]);
+      }
     });
+    // The projections in patch order at the band nodes (mpmice/BandScatter.h):
+    // a particle tagged by its patch (its position at the step's start, where
+    // it lives on the ranks) reaches at most ceil(moved_cells) nodes beyond
+    // its stencil, so the band is widened by that much (at least 1, as the
+    // other coupled scatters ask). The particles' nodes then all lie in
+    // their patch's reach box, and the projected node masses (so M_c and
+    // the fluxes) have the same bits on any rank count.
+    PatchBand* band = mpm_->coupling_band(std::max(1, int(std::ceil(moved_cells))));
+    const bool by_band = band != nullptr;  // the same on every rank (MpmComponent::coupling_band)
+    // The node masses of the projection, the band partials added in patch
+    // order and, on ranks, combined (one contribution per node): the sums
+    // of every patch at the nodes of the own cells.
+    auto reduce_band = [&] {  // collective on ranks: every rank calls it once per projection
+      if (!band) return;
+      band->reduce(1, [&](std::size_t gi, const double* q) { node_mass[gi] = q[0]; });
+      mpm_->sum_band_node_doubles(node_mass.data(), 1);
+    };
+    auto scatter = [&](auto&& particle_mass) {
+      node_mass.assign(ng.count(), 0.0);  // ng: the grid of sg
+      for_each_coupling_particle(mm.stencils, p.size(), band, [&](std::size_t i) {
+        const int P = coupling_tag(band, p.x[i]);
+        particle_mass(i, [&](std::size_t gi) { return band_target(band, P, gi, 0, &node_mass[gi]); });
+      });
+      reduce_band();
+    };
     // Scratch particles (position and domain: what the per-axis factors read).
     Particles& q = flux_particles_;
     q.x = p.x;
@@ -158,7 +204,6 @@ void MpmIceComponent::solid_mass_fluxes(double dt) {
     for (int k = 0; k < sg.n[2]; ++k)
       for (int j = 0; j < sg.n[1]; ++j)
         for (int i = 0; i < sg.n[0]; ++i) wnode[sg.index(i, j, k)] = node_cell_weight(sg, symmetric, IntVec3(i, j, k));
-    std::vector<double> node_mass;
     // M_c = sum of its 8 corner nodes' w_n m_n (n in the order 0..7, x fastest).
     auto nodes_to_cells = [&](std::vector<double>& M) {
       M.assign(ci.count(), 0.0);
@@ -182,13 +227,15 @@ void MpmIceComponent::solid_mass_fluxes(double dt) {
       if (!compute_axis_stencils(q, sg, spec, st) && compute_stencils(q, sg, spec, st) >= 0) {
         // A particle would leave the grid during the step: no flux for it
         // (MPM reports the particle when it does leave).
+        node_mass.assign(sg.count(), 0.0);
+        reduce_band();  // the other ranks' band collectives
         M.assign(ci.count(), 0.0);
         return false;
       }
-      node_mass.assign(sg.count(), 0.0);
       visit_stencils(st, [&](const auto& view) {
-        for (std::size_t i = 0; i < q.size(); ++i)
-          view.weights(i, [&](std::size_t gi, double w) { node_mass[gi] += p.mass[i] * w; });
+        scatter([&](std::size_t i, auto&& at) {
+          view.weights(i, [&](std::size_t gi, double w) { *at(gi) += p.mass[i] * w; });
+        });
       });
       fold_symmetry_scalar(mm.bcs, sg, node_mass);
       nodes_to_cells(M);
@@ -202,15 +249,14 @@ void MpmIceComponent::solid_mass_fluxes(double dt) {
     // M_c of the scratch particles' present positions, every cell with extra cells.
     auto project = [&](std::vector<double>& M) {
       if (!(fac.N && axis_ok[0] && axis_ok[1] && axis_ok[2])) return project_general(M);
-      node_mass.assign(sg.count(), 0.0);
-      if (fac.N == 2) fac.scatter_mass<2>(p.mass, sg, node_mass);
-      else fac.scatter_mass<3>(p.mass, sg, node_mass);
+      if (fac.N == 2) scatter([&](std::size_t i, auto&& at) { fac.scatter_mass<2>(i, p.mass[i], sg, at); });
+      else scatter([&](std::size_t i, auto&& at) { fac.scatter_mass<3>(i, p.mass[i], sg, at); });
       fold_symmetry_scalar(mm.bcs, sg, node_mass);
       nodes_to_cells(M);
       return true;
     };
     FaceScalars& F = ice_->lagrangian_mass_flux(s);
-    std::vector<double> M0, M1, flux(ci.count());
+    std::vector<double> M0, M1, flux(ci.count()), dM(ci.count());
     bool ok = project(M0);
     for (int d = 0; d < 3; ++d) {
       bool moved = false;
@@ -232,6 +278,11 @@ void MpmIceComponent::solid_mass_fluxes(double dt) {
       const IndexRange r = g.cells_with_extra();
       IndexRange rows = r;
       rows.hi[d] = rows.lo[d] + 1;
+      // dM_c = M1_c - M0_c of every cell. With the band on ranks each rank
+      // has the whole sums at its own cells only: their dM gathered from
+      // their owners (values, not sums: the one-process bits).
+      for (std::size_t c = 0; c < dM.size(); ++c) dM[c] = M1[c] - M0[c];
+      if (by_band && mpm_->layout().distributed) gather_own_cells(g, ci, dM);
       for_each_cell_serial(rows, [&](int i, int j, int k) {
         IntVec3 c(i, j, k);
         double f = 0;
@@ -242,13 +293,14 @@ void MpmIceComponent::solid_mass_fluxes(double dt) {
             continue;
           }
           flux[ci(c)] = f;
-          f -= M1[ci(c)] - M0[ci(c)];
+          f -= dM[ci(c)];
         }
       });
-      // MPI ranks: each rank's fluxes are those of its own particles (M is
-      // linear in them); the sum over the ranks at the nodes c + off (the
-      // node arrays' sums, mpm/RankNodeSums.h) gives each face its total.
-      if (mpm_->layout().distributed) sum_cell_array_over_ranks(*mpm_, r, off, ng, ci, flux);
+      // MPI ranks without the band (periodic, axisymmetric): each rank's
+      // fluxes are those of its own particles (M is linear in them); the sum
+      // over the ranks at the nodes c + off (the node arrays' sums,
+      // mpm/RankNodeSums.h) gives each face its total, to round-off.
+      if (!by_band && mpm_->layout().distributed) sum_cell_array_over_ranks(*mpm_, r, off, ng, ci, flux);
       const bool all_ok = !mpm_->layout().any(!ok);
       for (std::size_t pi = 0; pi < g.patches.size(); ++pi) {
         GridArray<double>& Fd = F.at(d, pi);

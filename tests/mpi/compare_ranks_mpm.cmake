@@ -17,11 +17,11 @@
 #   README A13) as it is but for its patches: the cuts x = y = 2.5 go through
 #   the burning cube; its checkpoint at t = 2.5e-4 of 5e-4 s; compared: every
 #   .dat file (TotalMass, KineticEnergy, totalMassBurned: saves added) and p.x, p.velocity, p.mass,
-#   press_CC, rho_CC, temp_CC, g.temperature (VARS), within REL = 1e-10 of the
-#   max (a measured bound: session 18 measured 7.7e-12 for 1 vs 2, 2 -> 1 and
-#   2 -> 4, 0 for 1 -> 2; main before the pressure-force association of
-#   mpmice/MpmIceTransfers.cpp 1.0e-11; the velocities follow pressure
-#   differences, docs/parallel.md "MPMICE on ranks").
+#   press_CC, rho_CC, temp_CC, g.temperature (VARS), with REL = 0: only the
+#   absolute 1e-15 (session 21: the MPMICE particle scatters in patch order,
+#   mpmice/BandScatter.h; measured 0 for 1 vs 2, 2 -> 1, 1 -> 2 and 2 -> 4;
+#   session 18 measured 7.7e-12 with per-rank sums, docs/parallel.md
+#   "MPMICE on ranks").
 # Variables: TEPHRA, MPIEXEC, PYTHON, DECK_IN, WORK, COMPARE; optional
 # REL (relative bound, default 1e-12), PATCHES (default [2,1,1]), VARS (default p.x p.velocity p.stress),
 # KEEP_DECK (ON: only the patches are changed).

@@ -11,9 +11,10 @@
 // the stable dt too, for the cases marked exact. Not exact (bound
 // max |a - b| <= 1e-12 max |a|): friction contact, whose mass gradients
 // (normals) and contact positions are still summed by rank (mpm/RankNodeSums.h).
-// The .dat sums add the particles of each rank in storage order and the
-// ranks' partials in rank order: 1e-12 relative (TotalMomentum, 0 to
-// round-off, relative to sum m |v|).
+// The .dat sums (session 21): one partial per patch, its particles in
+// ascending id, added in ascending patch id (mpm/MpmComponentOutput.cpp),
+// in one process and on ranks alike: EQUAL for the exact cases; 1e-12
+// relative otherwise (TotalMomentum, 0 to round-off, relative to sum m |v|).
 // Also asserted: particles really cross the patch cut and change rank during
 // the run (under -np 2; some come back before the end), every particle id exists exactly once over the
 // ranks after every step, the total count is constant.
@@ -209,6 +210,7 @@ TEST_P(MpiMpm, RanksGiveTheOneRankAnswer) {
   if (c.exact) {
     EXPECT_EQ(w.particles, 0.0) << "positions, velocity, F, stress: the one-rank bits";
     EXPECT_EQ(w.dt, 0.0) << "stable dt: the one-rank bits";
+    EXPECT_EQ(w.sums, 0.0) << ".dat sums: the one-rank bits";
   }
   if (world_ranks().size > 1) EXPECT_GT(migrated, 0) << "no particle crossed to another rank";
   else EXPECT_EQ(migrated, 0);
