@@ -80,8 +80,11 @@ struct AxisFactors {
 
   // m_g = sum_p m_p S_gp, particle by particle in index order and each
   // particle's nodes x fastest (the order of visit_stencils, so the same sums).
+  // m_above (axisymmetric, when given): the part from the particles with
+  // x_p >= the node's x (node_mass_above, mpmice/CellProjection.h).
   template <int NN>
-  void scatter_mass(const std::vector<double>& mass, const NodeGrid& sg, std::vector<double>& m) const {
+  void scatter_mass(const std::vector<double>& mass, const NodeGrid& sg, std::vector<double>& m,
+                    const std::vector<Vec3>* x = nullptr, std::vector<double>* m_above = nullptr) const {
     const std::size_t sy = std::size_t(sg.n[0]), sz = std::size_t(sg.n[0]) * std::size_t(sg.n[1]);
     for (std::size_t i = 0; i < mass.size(); ++i) {
       const double* X = S[0].data() + i * NN;
@@ -93,6 +96,10 @@ struct AxisFactors {
           const std::size_t row = base + sy * std::size_t(b) + sz * std::size_t(c);
           const double y = Y[b], z = Z[c];
           for (int a = 0; a < NN; ++a) m[row + std::size_t(a)] += mass[i] * (X[a] * y * z);
+          if (m_above)
+            for (int a = 0; a < NN; ++a)
+              if ((*x)[i][0] >= sg.origin[0] + (first[0][i] + a) * sg.h[0])
+                (*m_above)[row + std::size_t(a)] += mass[i] * (X[a] * y * z);
         }
     }
   }
@@ -138,6 +145,7 @@ void MpmIceComponent::solid_mass_fluxes(double dt) {
     const Particles& p = mm.particles;
     const IntVec3 off = node_offset(g, ng);
     const std::array<bool, 6> symmetric = symmetry_faces(mm.bcs);
+    const bool axi = ice_->setup().axisymmetric;
     // d_p = dt sum_g S_gp v_g.
     std::vector<Vec3> disp(p.size(), Vec3::Zero());
     visit_stencils(mm.stencils, [&](const auto& view) {
@@ -158,7 +166,7 @@ void MpmIceComponent::solid_mass_fluxes(double dt) {
     for (int k = 0; k < sg.n[2]; ++k)
       for (int j = 0; j < sg.n[1]; ++j)
         for (int i = 0; i < sg.n[0]; ++i) wnode[sg.index(i, j, k)] = node_cell_weight(sg, symmetric, IntVec3(i, j, k));
-    std::vector<double> node_mass;
+    std::vector<double> node_mass, node_above;  // node_above: m_g^+ (axisymmetric only)
     // M_c = sum of its 8 corner nodes' w_n m_n (n in the order 0..7, x fastest).
     auto nodes_to_cells = [&](std::vector<double>& M) {
       M.assign(ci.count(), 0.0);
@@ -169,6 +177,12 @@ void MpmIceComponent::solid_mass_fluxes(double dt) {
           const IntVec3 node = c + off + IntVec3(n & 1, (n >> 1) & 1, (n >> 2) & 1);
           if ((node.array() < 0).any() || (node.array() >= sg.n.array()).any()) continue;
           const std::size_t gi = sg.index(node);
+          if (axi) {  // per-radian masses: the share of m_g on the cell's side in r (CellProjection.h)
+            const bool on_x = (symmetric[0] && node[0] == sg.extra[0]) || (symmetric[1] && node[0] == sg.n[0] - 1 - sg.extra[0]);
+            const double up = node_mass[gi] > 0.0 ? node_above[gi] / node_mass[gi] : 0.5;
+            sum += axisymmetric_node_cell_weight(wnode[gi], on_x, (n & 1) == 0 ? up : 1.0 - up) * node_mass[gi];
+            continue;
+          }
           sum += wnode[gi] * node_mass[gi];
         }
         M[ci(c)] = sum;
@@ -191,6 +205,14 @@ void MpmIceComponent::solid_mass_fluxes(double dt) {
           view.weights(i, [&](std::size_t gi, double w) { node_mass[gi] += p.mass[i] * w; });
       });
       fold_symmetry_scalar(mm.bcs, sg, node_mass);
+      if (axi) {
+        node_mass_above(sg, p.mass, q.x, [&](auto&& fn) {
+          visit_stencils(st, [&](const auto& view) {
+            for (std::size_t i = 0; i < q.size(); ++i) view.weights(i, [&](std::size_t gi, double w) { fn(i, gi, w); });
+          });
+        }, node_above);
+        fold_symmetry_scalar(mm.bcs, sg, node_above);
+      }
       nodes_to_cells(M);
       return true;
     };
@@ -203,9 +225,12 @@ void MpmIceComponent::solid_mass_fluxes(double dt) {
     auto project = [&](std::vector<double>& M) {
       if (!(fac.N && axis_ok[0] && axis_ok[1] && axis_ok[2])) return project_general(M);
       node_mass.assign(sg.count(), 0.0);
-      if (fac.N == 2) fac.scatter_mass<2>(p.mass, sg, node_mass);
-      else fac.scatter_mass<3>(p.mass, sg, node_mass);
+      if (axi) node_above.assign(sg.count(), 0.0);
+      std::vector<double>* above = axi ? &node_above : nullptr;
+      if (fac.N == 2) fac.scatter_mass<2>(p.mass, sg, node_mass, &q.x, above);
+      else fac.scatter_mass<3>(p.mass, sg, node_mass, &q.x, above);
       fold_symmetry_scalar(mm.bcs, sg, node_mass);
+      if (axi) fold_symmetry_scalar(mm.bcs, sg, node_above);
       nodes_to_cells(M);
       return true;
     };
@@ -256,6 +281,14 @@ void MpmIceComponent::solid_mass_fluxes(double dt) {
         for_each_cell_serial({patch.lo, patch.hi + IntVec3::Unit(d)}, [&](int i, int j, int k) {
           const IntVec3 c(i, j, k);
           Fd(c) = all_ok ? flux[ci(c)] : 0.0;
+          // Axisymmetric: the per-radian mass F_rad through the face in ICE's
+          // Cartesian flux units (ice/RadialWeights.h: cell i gains (r_f/r_i) F_x
+          // and F_y of Cartesian content, i.e. F_rad dz/r_i): F_x = F_rad dz/r_f
+          // on r-faces (0 on the axis), F = F_rad dz/r_i on the others.
+          if (axi) {
+            const double r = g.lower[0] + (d == 0 ? i : i + 0.5) * g.dx[0];
+            Fd(c) = r > 0.0 ? Fd(c) * g.dx[2] / r : 0.0;
+          }
         });
       }
       std::swap(M0, M1);
