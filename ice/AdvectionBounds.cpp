@@ -35,7 +35,7 @@ bool any_row_marks(const IndexRange& r, Kernel&& kernel) {
 // cells, and the rows' "limited" answers are OR-ed (any_row_marks), so any
 // thread count gives the same result.
 bool outflow_limits(const Grid& g, const CellScalars& q, const FaceScalars& u, const FaceScalars* weight, double dt,
-                    const FaceScalars& flux, CellScalars& limit) {
+                    const FaceScalars& flux, CellScalars& limit, const RadialWeights* radial) {
   limit.fill(1.0);
   bool any = false;
   const double r[3] = {dt / g.dx[0], dt / g.dx[1], dt / g.dx[2]};
@@ -60,18 +60,22 @@ bool outflow_limits(const Grid& g, const CellScalars& q, const FaceScalars& u, c
           wh[d] = d == 0 ? wl[0] + 1 : row_ptr(weight->at(d, pi), i0, j + (d == 1), k + (d == 2));
         }
       bool row_limited = false;
+      const double* rlo = radial ? radial->lo_row(i0) : nullptr;
+      const double* rhi = radial ? radial->hi_row(i0) : nullptr;
       for (int c = 0; c < n; ++c) {
         const double qD = qr[c];
         double F1 = 0, F = 0;  // first-order and actual outflow of the cell
         for (int d = 0; d < 3; ++d) {
           const double phi_lo = -ul[d][c] * r[d], phi_hi = uh[d][c] * r[d];
+          // Axisymmetric: the r-faces' share of D's volume, r_f/r_D (ice/RadialWeights.h).
+          const double gl = radial && d == 0 ? rlo[c] : 1.0, gh = radial && d == 0 ? rhi[c] : 1.0;
           if (phi_lo > 0) {
-            F1 += phi_lo * (weight ? wl[d][c] : 1.0) * qD;
-            F -= Fl[d][c];
+            F1 += gl * (phi_lo * (weight ? wl[d][c] : 1.0) * qD);
+            F -= gl * Fl[d][c];
           }
           if (phi_hi > 0) {
-            F1 += phi_hi * (weight ? wh[d][c] : 1.0) * qD;
-            F += Fh[d][c];
+            F1 += gh * (phi_hi * (weight ? wh[d][c] : 1.0) * qD);
+            F += gh * Fh[d][c];
           }
         }
         const double A = 0.5 * (qD + F1);
@@ -112,7 +116,8 @@ void limit_outflow(const Grid& g, const CellScalars& q, const FaceScalars& u, co
 // outgoing sums in the order of the cell loop they replaced (x, y, z; low
 // face before high face), so the flags are the same.
 bool flag_out_of_range_donors(const Grid& g, const CellScalars& psi, const CellScalars& mass,
-                              const FaceScalars& mass_flux, const FaceScalars& psi_flux, CellScalars& flag) {
+                              const FaceScalars& mass_flux, const FaceScalars& psi_flux, CellScalars& flag,
+                              const RadialWeights* radial) {
   bool any = false;
   for (std::size_t pi = 0; pi < g.patches.size(); ++pi) {
     flag[pi].fill(0.0);
@@ -135,6 +140,8 @@ bool flag_out_of_range_donors(const Grid& g, const CellScalars& psi, const CellS
       }
       double* fl = row_ptr(flag[pi], i0, j, k);
       bool row_flagged = false;
+      const double* rlo = radial ? radial->lo_row(i0) : nullptr;
+      const double* rhi = radial ? radial->hi_row(i0) : nullptr;
       for (int c = 0; c < n; ++c) {
         const double p = ps[c], M = M_row[c];
         double lo = p, hi = p, out_M = 0, out_Q = 0;
@@ -142,6 +149,11 @@ bool flag_out_of_range_donors(const Grid& g, const CellScalars& psi, const CellS
           lo = std::min({lo, pn[d][0][c], pn[d][1][c]});
           hi = std::max({hi, pn[d][0][c], pn[d][1][c]});
           // Outgoing: negative flux on the low face, positive on the high face (the mass flux decides the donor).
+          if (radial && d == 0) {  // axisymmetric: r-faces weighted by r_f/r_D (ice/RadialWeights.h)
+            if (mf[0][0][c] < 0) out_M -= rlo[c] * mf[0][0][c], out_Q -= rlo[c] * qf[0][0][c];
+            if (mf[0][1][c] > 0) out_M += rhi[c] * mf[0][1][c], out_Q += rhi[c] * qf[0][1][c];
+            continue;
+          }
           if (mf[d][0][c] < 0) out_M -= mf[d][0][c], out_Q -= qf[d][0][c];
           if (mf[d][1][c] > 0) out_M += mf[d][1][c], out_Q += qf[d][1][c];
         }

@@ -40,6 +40,7 @@
 //    which it contains for psi_lo >= 0.
 #include "core/grid/Grid.h"
 #include "ice/IceFields.h"
+#include "ice/RadialWeights.h"
 
 namespace tephra {
 
@@ -59,8 +60,10 @@ constexpr double kOutflowBoundInactive = 0.3;
 // limit(D) = s_D for every interior cell D whose outflow exceeds A_D, 1 for
 // the others (extra cells and ghosts are set to 1: exchange the ghosts after).
 // weight: w_f per face (null: 1). Returns whether any cell is limited.
+// radial (axisymmetric, ice/RadialWeights.h): the donor's r-face outflows
+// count with r_f/r_D, the share of D's volume they take.
 bool outflow_limits(const Grid& g, const CellScalars& q, const FaceScalars& u, const FaceScalars* weight, double dt,
-                    const FaceScalars& flux, CellScalars& limit);
+                    const FaceScalars& flux, CellScalars& limit, const RadialWeights* radial = nullptr);
 
 // F_f <- F1_f + s_D (F_f - F1_f) on every face of the interior cells whose
 // donor D has limit(D) < 1 (limit valid in the ghosts).
@@ -69,8 +72,10 @@ void limit_outflow(const Grid& g, const CellScalars& q, const FaceScalars& u, co
 
 // flag(D) = 1 for the interior donors outside the range of item 2, else 0.
 // mass_flux: the mass fluxes F_f, psi_flux: the F_psi,f. Returns whether any.
+// radial: the r-face outflows weighted by r_f/r_D as in outflow_limits.
 bool flag_out_of_range_donors(const Grid& g, const CellScalars& psi, const CellScalars& mass,
-                              const FaceScalars& mass_flux, const FaceScalars& psi_flux, CellScalars& flag);
+                              const FaceScalars& mass_flux, const FaceScalars& psi_flux, CellScalars& flag,
+                              const RadialWeights* radial = nullptr);
 
 // F_psi,f = F_f psi_D on the faces of interior cells whose donor is flagged
 // (flag valid in the ghosts).

@@ -68,7 +68,7 @@ namespace {
 // flux_divergence followed by a cell loop.
 template <class Base>
 void update_from_fluxes(const Grid& g, const FaceScalars& F, Base&& base, const CellScalars& mass_new,
-                        CellScalars& out) {
+                        CellScalars& out, const RadialWeights* rw) {
   for (std::size_t pi = 0; pi < g.patches.size(); ++pi) {
     const IndexRange cells = g.patches[pi].cells();
     const int i0 = cells.lo[0], n = cells.hi[0] - i0;
@@ -78,8 +78,11 @@ void update_from_fluxes(const Grid& g, const FaceScalars& F, Base&& base, const 
       const double *fz0 = row_ptr(F.at(2, pi), i0, j, k), *fz1 = row_ptr(F.at(2, pi), i0, j, k + 1);
       const double* m_new = row_ptr(mass_new[pi], i0, j, k);
       double* o = row_ptr(out[pi], i0, j, k);
+      const double* wlo = rw ? rw->lo_row(i0) : nullptr;  // axisymmetric: r-faces times r_f/r_i
+      const double* whi = rw ? rw->hi_row(i0) : nullptr;
       for (int c = 0; c < n; ++c) {
-        const double dq = (fx[c] - fx[c + 1]) + (fy0[c] - fy1[c]) + (fz0[c] - fz1[c]);
+        const double dq = rw ? (wlo[c] * fx[c] - whi[c] * fx[c + 1]) + (fy0[c] - fy1[c]) + (fz0[c] - fz1[c])
+                             : (fx[c] - fx[c + 1]) + (fy0[c] - fy1[c]) + (fz0[c] - fz1[c]);
         o[c] = (base(pi, i0 + c, j, k) + dq) / m_new[c];
       }
     });
@@ -95,7 +98,7 @@ void update_from_fluxes(const Grid& g, const FaceScalars& F, Base&& base, const 
 // shared face agree) send F_M psi_D through their outgoing faces.
 void IceComponent::keep_contents_nonnegative(std::size_t m, const CellScalars& psi_L, CellScalars& flag) {
   const Grid& g = setup_.grid;
-  const bool any = flag_out_of_range_donors(g, psi_L, mass_L_[m], flux_, flux2_, flag);
+  const bool any = flag_out_of_range_donors(g, psi_L, mass_L_[m], flux_, flux2_, flag, radial());
   if (!layout_.any(any)) return;
   halo_->exchange(flag);
   donor_value_fluxes(g, psi_L, flux_, flag, flux2_);
@@ -109,7 +112,7 @@ void IceComponent::advect_content(std::size_t m, const CellScalars& psi_L, CellS
     const CellScalars& mass_L = mass_L_[m];
     update_from_fluxes(g, flux2_, [&](std::size_t pi, int i, int j, int k) {
       return mass_L[pi](i, j, k) * psi_L[pi](i, j, k);
-    }, mass_new_, out);
+    }, mass_new_, out, radial());
     return;
   }
   for (std::size_t pi = 0; pi < g.patches.size(); ++pi) {
@@ -121,7 +124,7 @@ void IceComponent::advect_content(std::size_t m, const CellScalars& psi_L, CellS
   }
   density_fluxes(g, setup_.advection, content_, mats_[m].vel_FCME, dt, flux2_);
   update_from_fluxes(g, flux2_, [&](std::size_t pi, int i, int j, int k) { return content_[pi](i, j, k); },
-                     mass_new_, out);
+                     mass_new_, out, radial());
 }
 
 }  // namespace tephra

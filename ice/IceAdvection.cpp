@@ -130,18 +130,21 @@ inline T slab_value(bool periodic, int cells_d, const T* q, const Slopes<T>* slo
 
 namespace {
 // Fraction of cell (i, j, k) that flows out through its six faces in dt.
-double exact_outflux(const Grid& g, const FaceScalars& u, std::size_t pi, double dt, int i, int j, int k) {
+// Axisymmetric (radial): the r-face terms times r_f/r_i (ice/RadialWeights.h).
+double exact_outflux(const Grid& g, const FaceScalars& u, std::size_t pi, double dt, int i, int j, int k,
+                     const RadialWeights* radial) {
   double out = 0;
   for (int d = 0; d < 3; ++d) {
     const GridArray<double>& f = u.at(d, pi);
     const IntVec3 c(i, j, k), e = IntVec3::Unit(d);
-    out += std::max(0.0, -f(c)) * dt / g.dx[d] + std::max(0.0, f(IntVec3(c + e))) * dt / g.dx[d];
+    const double wl = radial && d == 0 ? *radial->lo_row(i) : 1.0, wh = radial && d == 0 ? *radial->hi_row(i) : 1.0;
+    out += wl * (std::max(0.0, -f(c)) * dt / g.dx[d]) + wh * (std::max(0.0, f(IntVec3(c + e))) * dt / g.dx[d]);
   }
   return out;
 }
 }  // namespace
 
-double check_outflux(const Grid& g, const FaceScalars& u, double dt, int step) {
+double check_outflux(const Grid& g, const FaceScalars& u, double dt, int step, const RadialWeights* radial) {
   double largest = 0.0;
   for (std::size_t pi = 0; pi < g.patches.size(); ++pi) {
     const Patch& p = g.patches[pi];
@@ -159,17 +162,22 @@ double check_outflux(const Grid& g, const FaceScalars& u, double dt, int step) {
       const double* uz0 = row_ptr(u.at(2, pi), i0, j, k);
       const double* uz1 = row_ptr(u.at(2, pi), i0, j, k + 1);
       double most = 0.0;
+      const double* wlo = radial ? radial->lo_row(i0) : nullptr;
+      const double* whi = radial ? radial->hi_row(i0) : nullptr;
       for (int c = 0; c < n; ++c) {
         // Outflow fraction through the low and high face of each direction (x, y, z in this order).
         double out = 0;
-        out += std::max(0.0, -ux[c]) * rx + std::max(0.0, ux[c + 1]) * rx;
+        if (radial)
+          out += wlo[c] * (std::max(0.0, -ux[c]) * rx) + whi[c] * (std::max(0.0, ux[c + 1]) * rx);
+        else
+          out += std::max(0.0, -ux[c]) * rx + std::max(0.0, ux[c + 1]) * rx;
         out += std::max(0.0, -uy0[c]) * ry + std::max(0.0, uy1[c]) * ry;
         out += std::max(0.0, -uz0[c]) * rz + std::max(0.0, uz1[c]) * rz;
         most = std::max(most, out);
         // The screen above multiplies by dt/dx; the decision uses the reference
         // form (a dt)/dx of every term, so a margin of 1e-12 hands the cells
         // near the bound to it.
-        if (out > 1.0 - 1e-12 && exact_outflux(g, u, pi, dt, i0 + c, j, k) > 1.0) {
+        if (out > 1.0 - 1e-12 && exact_outflux(g, u, pi, dt, i0 + c, j, k, radial) > 1.0) {
           failed[static_cast<std::size_t>(k - r.lo[2]) * ny + (j - r.lo[1])] = i0 + c;
           return;
         }
@@ -180,7 +188,7 @@ double check_outflux(const Grid& g, const FaceScalars& u, double dt, int step) {
     for (std::size_t row = 0; row < failed.size(); ++row) {
       if (failed[row] < 0) continue;
       const int i = failed[row], j = r.lo[1] + int(row % ny), k = r.lo[2] + int(row / ny);
-      const double out = exact_outflux(g, u, pi, dt, i, j, k);
+      const double out = exact_outflux(g, u, pi, dt, i, j, k, radial);
       std::ostringstream os;
       os << "ICE advection at step " << step << ": cell (" << i << "," << j << "," << k
          << ") would lose a fraction " << out << " > 1 of its content (face velocities too large for dt)";
@@ -274,7 +282,7 @@ void specific_fluxes(const Grid& g, AdvectionOrder order, const PatchFields<Cell
 }
 
 template <class T>
-void flux_divergence(const Grid& g, const FaceData<T>& flux, PatchFields<CellField<T>>& dq) {
+void flux_divergence(const Grid& g, const FaceData<T>& flux, PatchFields<CellField<T>>& dq, const RadialWeights* radial) {
   for (std::size_t pi = 0; pi < g.patches.size(); ++pi) {
     const GridArray<T>& fx = flux.at(0, pi);
     const GridArray<T>& fy = flux.at(1, pi);
@@ -287,6 +295,11 @@ void flux_divergence(const Grid& g, const FaceData<T>& flux, PatchFields<CellFie
       const T *y0 = row_ptr(fy, i0, j, k), *y1 = row_ptr(fy, i0, j + 1, k);
       const T *z0 = row_ptr(fz, i0, j, k), *z1 = row_ptr(fz, i0, j, k + 1);
       T* o = row_ptr(out, i0, j, k);
+      if (radial) {  // r-faces weighted by r_f/r_i (ice/RadialWeights.h)
+        const double *wlo = radial->lo_row(i0), *whi = radial->hi_row(i0);
+        for (int c = 0; c < n; ++c) o[c] = T((wlo[c] * x[c] - whi[c] * x[c + 1]) + (y0[c] - y1[c]) + (z0[c] - z1[c]));
+        return;
+      }
       for (int c = 0; c < n; ++c) o[c] = T((x[c] - x[c + 1]) + (y0[c] - y1[c]) + (z0[c] - z1[c]));
     });
   }
@@ -296,7 +309,7 @@ template void specific_fluxes<double>(const Grid&, AdvectionOrder, const CellSca
                                       const FaceScalars&, double, FaceScalars&);
 template void specific_fluxes<Vec3>(const Grid&, AdvectionOrder, const CellVectors&, const FaceScalars&,
                                     const FaceScalars&, double, FaceData<Vec3>&);
-template void flux_divergence<double>(const Grid&, const FaceScalars&, CellScalars&);
-template void flux_divergence<Vec3>(const Grid&, const FaceData<Vec3>&, CellVectors&);
+template void flux_divergence<double>(const Grid&, const FaceScalars&, CellScalars&, const RadialWeights*);
+template void flux_divergence<Vec3>(const Grid&, const FaceData<Vec3>&, CellVectors&, const RadialWeights*);
 
 }  // namespace tephra

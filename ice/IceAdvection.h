@@ -29,6 +29,7 @@
 #include "core/grid/Grid.h"
 #include "ice/IceFields.h"
 #include "ice/IceSetup.h"
+#include "ice/RadialWeights.h"
 
 namespace tephra {
 
@@ -37,8 +38,9 @@ namespace tephra {
 // "bullet proofing" of the outflux volumes). Returns the largest outflow
 // fraction sum_out phi over the interior cells of g (its screen form,
 // sum of max(0, -+u) dt/dx; 0 for no cells): bound_outflow skips its pass
-// below kOutflowBoundInactive (ice/AdvectionBounds.h).
-double check_outflux(const Grid& g, const FaceScalars& u, double dt, int step);
+// below kOutflowBoundInactive (ice/AdvectionBounds.h). Axisymmetric
+// (radial != null): the r-face terms are weighted by r_f/r_i (ice/RadialWeights.h).
+double check_outflux(const Grid& g, const FaceScalars& u, double dt, int step, const RadialWeights* radial = nullptr);
 
 // flux.at(d, p)(face) = F (signed: positive along +d) for every face of the
 // interior cells of every patch. q must hold valid values in the extra cells
@@ -52,8 +54,10 @@ void specific_fluxes(const Grid& g, AdvectionOrder order, const PatchFields<Cell
                      const FaceScalars& u, const FaceScalars& mass_flux, double dt, FaceData<T>& flux);
 
 // dq(c) = sum of incoming minus outgoing fluxes over the six faces of each
-// interior cell c (in units of q times the cell volume).
+// interior cell c (in units of q times the cell volume). Axisymmetric
+// (radial != null): the r-face fluxes weighted by r_f/r_i (ice/RadialWeights.h).
 template <class T>
-void flux_divergence(const Grid& g, const FaceData<T>& flux, PatchFields<CellField<T>>& dq);
+void flux_divergence(const Grid& g, const FaceData<T>& flux, PatchFields<CellField<T>>& dq,
+                     const RadialWeights* radial = nullptr);
 
 }  // namespace tephra

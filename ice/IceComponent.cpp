@@ -22,7 +22,9 @@ namespace {
 constexpr int kGhosts = 2;
 }  // namespace
 
-IceComponent::IceComponent(IceSetup setup) : setup_(std::move(setup)) {}
+IceComponent::IceComponent(IceSetup setup) : setup_(std::move(setup)) {
+  if (setup_.axisymmetric) radial_ = make_radial_weights(setup_.grid);
+}
 
 // Initial state from the <geom_object>s (Uintah's ICEMaterial::initializeCells,
 // with mixing made explicit): each cell, extra cells included, is sampled at
@@ -307,6 +309,11 @@ double IceComponent::stable_timestep() const {
             const double uC = f.vel_CC[pi](C)[d], uL = f.vel_CC[pi](L)[d], uR = f.vel_CC[pi](R)[d];
             const double c = std::max(f.speedSound_CC[pi](L), f.speedSound_CC[pi](R));
             const double extra = knob * c + std::abs(uR - uL) + grav_vel + diff_vel;
+            if (radial() && d == 0) {  // axisymmetric: r-face areas r_f/r_i of the Cartesian one (ice/RadialWeights.h)
+              swept += area[d] * (*radial_.hi_row(i) * std::max(0.0, 0.5 * (uC + uR) + extra) +
+                                  *radial_.lo_row(i) * std::max(0.0, -(0.5 * (uC + uL) - extra)));
+              continue;
+            }
             swept += area[d] * (std::max(0.0, 0.5 * (uC + uR) + extra) + std::max(0.0, -(0.5 * (uC + uL) - extra)));
           }
           return V / (swept + 1e-100);

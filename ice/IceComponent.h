@@ -15,6 +15,7 @@
 #include "ice/IceFields.h"
 #include "ice/IceSetup.h"
 #include "ice/PressureSolver.h"
+#include "ice/RadialWeights.h"
 #include "ice/models/IceModel.h"
 
 namespace tephra {
@@ -221,7 +222,11 @@ class IceComponent final : public Component {
   // IceOutput.cpp: the source models' sums over the patches of all ranks.
   void model_reductions(const std::set<std::string>& labels, std::map<std::string, std::vector<double>>& out) const;
 
+  // Axisymmetric ICE: the radial weights of the divergences (null when Cartesian).
+  const RadialWeights* radial() const { return setup_.axisymmetric ? &radial_ : nullptr; }
+
   IceSetup setup_;
+  RadialWeights radial_;  // filled by the constructor when setup_.axisymmetric
   PatchLayout layout_;
   bool keep_whole_level_ = false, laid_out_ = false;
   std::unique_ptr<HaloExchange> halo_;

@@ -9,6 +9,7 @@
 #include "core/deck/DeckLoader.h"
 #include "core/deck/DeckNode.h"
 #include "ice/Exchange.h"
+#include "ice/IceAxisymmetricDeck.h"
 #include "ice/IceComponent.h"
 #include "ice/models/IceModel.h"
 #include "models/ModelParameters.h"
@@ -567,6 +568,7 @@ IceSetup read_ice_setup(const Deck& deck, std::vector<IceMaterialSpec> solids, c
     }
   s.models = parse_ice_models(root, s, models);
   read_lodi(bcs, s);
+  read_ice_axisymmetric(root, s);  // <MPM><axisymmetric> (ice/IceAxisymmetricDeck.h)
   return s;
 }
 

@@ -75,9 +75,15 @@ void IceComponent::face_pressure_work(double /*dt*/) {
         const double* press = row_ptr(press_CC_[pi], i0, j, k);
         const double* delP = row_ptr(delP_Dilatate_[pi], i0, j, k);
         double* corr = row_ptr(work_corr_[m][pi], i0, j, k);
+        const RadialWeights* rw = radial();  // axisymmetric: r-faces times r_f/r_i (ice/RadialWeights.h)
+        const double* wlo = rw ? rw->lo_row(i0) : nullptr;
+        const double* whi = rw ? rw->hi_row(i0) : nullptr;
         for (int c = 0; c < n; ++c) {
           double work = 0;  // inflow through the low face minus outflow through the high face, x, y, z
-          work += pfx[c] * Ax[c] - pfx[c + 1] * Ax[c + 1];
+          if (rw)
+            work += wlo[c] * (pfx[c] * Ax[c]) - whi[c] * (pfx[c + 1] * Ax[c + 1]);
+          else
+            work += pfx[c] * Ax[c] - pfx[c + 1] * Ax[c + 1];
           work += pfy0[c] * Ay0[c] - pfy1[c] * Ay1[c];
           work += pfz0[c] * Az0[c] - pfz1[c] * Az1[c];
           const double ss = speed[c];
@@ -165,8 +171,12 @@ void IceComponent::add_advected_kinetic_energy_loss(std::size_t m) {
       const double* cv = row_ptr(cv_CC_[m][pi], i0, j, k);
       double* temp = row_ptr(f.temp_CC[pi], i0, j, k);
       double* corr = mixture ? row_ptr(work_corr_[0][pi], i0, j, k) : nullptr;
+      const RadialWeights* rw = radial();  // axisymmetric: r-faces times r_f/r_i (ice/RadialWeights.h)
+      const double* wlo = rw ? rw->lo_row(i0) : nullptr;
+      const double* whi = rw ? rw->hi_row(i0) : nullptr;
       for (int c = 0; c < n; ++c) {
-        const double dq = (fx[c] - fx[c + 1]) + (fy0[c] - fy1[c]) + (fz0[c] - fz1[c]);
+        const double dq = rw ? (wlo[c] * fx[c] - whi[c] * fx[c + 1]) + (fy0[c] - fy1[c]) + (fz0[c] - fz1[c])
+                             : (fx[c] - fx[c + 1]) + (fy0[c] - fy1[c]) + (fz0[c] - fz1[c]);
         const double m_L = mass_L[c], m_new = mass_new[c];
         const double ke_adv = 0.5 * m_L * vel_L[c].squaredNorm() + dq;
         const double loss = ke_adv - 0.5 * m_new * vel[c].squaredNorm();
@@ -229,11 +239,15 @@ void IceComponent::mixture_face_pressure_work(double dt) {
     for_each_cell(g.patches[pi].cells(), [&](int i, int j, int k) {
       const IntVec3 c(i, j, k);
       double work = 0;
+      const RadialWeights* rw = radial();  // axisymmetric: r-faces times r_f/r_i (ice/RadialWeights.h)
       for (int d = 0; d < 3; ++d) {
         const IntVec3 hi(c + IntVec3::Unit(d));
         const GridArray<double>& pf = press_FC_.at(d, pi);
         const GridArray<double>& A = flux2_.at(d, pi);
-        work += pf(c) * A(c) - pf(hi) * A(hi);
+        if (rw && d == 0)
+          work += *rw->lo_row(i) * (pf(c) * A(c)) - *rw->hi_row(i) * (pf(hi) * A(hi));
+        else
+          work += pf(c) * A(c) - pf(hi) * A(hi);
       }
       double cell_work = 0;
       for (const IceMaterialFields& f : mats_) {

@@ -227,7 +227,7 @@ void IceComponent::bound_outflow(std::size_t m, double dt, const FaceScalars* we
   if (outflow_limit_.size() == 0) outflow_limit_ = CellScalars(g, 2);
   const bool may_act = weight != nullptr || !(largest_outflow <= kOutflowBoundInactive);
   const bool any =
-      may_act && outflow_limits(g, mass_L_[m], mats_[m].vel_FCME, weight, dt, flux_, outflow_limit_);
+      may_act && outflow_limits(g, mass_L_[m], mats_[m].vel_FCME, weight, dt, flux_, outflow_limit_, radial());
   if (!layout_.any(any)) return;
   halo_->exchange(outflow_limit_);
   limit_outflow(g, mass_L_[m], mats_[m].vel_FCME, weight, dt, outflow_limit_, flux_);

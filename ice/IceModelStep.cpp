@@ -107,7 +107,7 @@ void IceComponent::advect_model_scalars(std::size_t m, double dt) {
       }
       halo_->exchange(scalar_L_);
       specific_fluxes(g, setup_.advection, scalar_L_, mats_[m].vel_FCME, flux_, dt, flux2_);
-      flux_divergence(g, flux2_, dq_);
+      flux_divergence(g, flux2_, dq_, radial());
       for (std::size_t pi = 0; pi < g.patches.size(); ++pi) {
         const Patch& p = g.patches[pi];
         for_each_cell(p.cells(), [&](int i, int j, int k) {

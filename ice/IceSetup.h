@@ -129,6 +129,10 @@ struct IceSetup {
   LodiSettings lodi;  // <BoundaryConditions><LODI> (enabled when a face uses var="LODI")
   // bcs[m][face][label]; unused on periodic faces.
   std::vector<std::array<std::array<IceFaceBc, kBcLabels>, 6>> bcs;
+  // <MPM><axisymmetric> true (read by ICE-only decks too; Uintah's ICE has no
+  // such flag): x = r, y = z, one cell in z; finite volumes in (r, z) per
+  // radian (ice/RadialWeights.h, docs/algorithms/ice.md "Axisymmetric ICE").
+  bool axisymmetric = false;
 };
 
 }  // namespace tephra

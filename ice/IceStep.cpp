@@ -278,8 +278,12 @@ void IceComponent::sum_volume_flux_and_kappa(double dt) {
         const double* v = row_ptr(f.sp_vol_CC[pi], i0, j, k);
         double* kappa = row_ptr(sum_kappa_[pi], i0, j, k);
         double* delP = row_ptr(delP_Dilatate_[pi], i0, j, k);
+        const RadialWeights* rw = radial();  // axisymmetric: r-faces times r_f/r_i (ice/RadialWeights.h)
+        const double* wlo = rw ? rw->lo_row(i0) : nullptr;
+        const double* whi = rw ? rw->hi_row(i0) : nullptr;
         for (int c = 0; c < n; ++c) {
-          const double dq = (fx[c] - fx[c + 1]) + (fy0[c] - fy1[c]) + (fz0[c] - fz1[c]);
+          const double dq = rw ? (wlo[c] * fx[c] - whi[c] * fx[c + 1]) + (fy0[c] - fy1[c]) + (fz0[c] - fz1[c])
+                               : (fx[c] - fx[c + 1]) + (fy0[c] - fy1[c]) + (fz0[c] - fz1[c]);
           const double cs = ss[c];
           kappa[c] += theta[c] * v[c] / (cs * cs);
           delP[c] += dq;
@@ -658,7 +662,7 @@ void IceComponent::advect_and_advance(double dt, int step) {
   for (std::size_t m = 0; m < mats_.size(); ++m) {
     if (setup_.materials[m].lagrangian) continue;  // MPMICE solid: the particles carry it (mpmice/)
     IceMaterialFields& f = mats_[m];
-    const double largest_outflow = check_outflux(g, f.vel_FCME, dt, step);  // the largest sum_out phi
+    const double largest_outflow = check_outflux(g, f.vel_FCME, dt, step, radial());  // the largest sum_out phi
     // Mass first; its face fluxes carry the specific quantities.
     density_fluxes(g, setup_.advection, mass_L_[m], f.vel_FCME, dt, flux_);
     const bool weighted = scale_fluid_flux(m, dt, flux_);  // MPMICE: the face area the solids leave (IceLagrangianFlux.cpp)
@@ -681,9 +685,14 @@ void IceComponent::advect_and_advance(double dt, int step) {
         double* mass_new = row_ptr(mass_new_[pi], i0, j, k);
         double* rho = row_ptr(f.rho_CC[pi], i0, j, k);
         Vec3* vel = row_ptr(f.vel_CC[pi], i0, j, k);
+        const RadialWeights* rw = radial();  // axisymmetric: r-faces times r_f/r_i (ice/RadialWeights.h)
+        const double* wlo = rw ? rw->lo_row(i0) : nullptr;
+        const double* whi = rw ? rw->hi_row(i0) : nullptr;
         for (int c = 0; c < n; ++c) {
-          const double dq = (fx[c] - fx[c + 1]) + (fy0[c] - fy1[c]) + (fz0[c] - fz1[c]);
-          const Vec3 dqv = Vec3((vx[c] - vx[c + 1]) + (vy0[c] - vy1[c]) + (vz0[c] - vz1[c]));
+          const double dq = rw ? (wlo[c] * fx[c] - whi[c] * fx[c + 1]) + (fy0[c] - fy1[c]) + (fz0[c] - fz1[c])
+                               : (fx[c] - fx[c + 1]) + (fy0[c] - fy1[c]) + (fz0[c] - fz1[c]);
+          const Vec3 dqv = rw ? Vec3((wlo[c] * vx[c] - whi[c] * vx[c + 1]) + (vy0[c] - vy1[c]) + (vz0[c] - vz1[c]))
+                              : Vec3((vx[c] - vx[c + 1]) + (vy0[c] - vy1[c]) + (vz0[c] - vz1[c]));
           const double mass_L = mass_L_row[c];
           const double mass = mass_L + dq;
           mass_new[c] = mass;

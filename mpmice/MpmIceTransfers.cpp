@@ -40,7 +40,8 @@ struct MpmIceNodeWeights {
 // fields m_g, v_g (and T_g = sum m_p T_p S_gp / m_g) of each MPM material are
 // averaged to the cell centres,
 //   M_c = 1/8 sum_8 m_g,  u_c = 1/8 sum m_g v_g / M_c,  T_c = 1/8 sum m_g T_g / M_c,
-// rho_CC = M_c / V (at least tiny_rho rho0: an empty cell keeps a trace of the
+// rho_CC = M_c / V (axisymmetric: the per-radian V = r_c dx dy and the node
+// weights of CellProjection.h) (at least tiny_rho rho0: an empty cell keeps a trace of the
 // solid, at rest, at its initial temperature), and the solid's micro density
 // from its EOS at the cell pressure of the last step,
 //   rho_micro = rho(p_CC - p_ref, T_c),  sp_vol = 1/rho_micro
@@ -86,7 +87,16 @@ void MpmIceComponent::solid_state_to_cells() {
       node_weights_[s] = std::make_shared<const MpmIceNodeWeights>(ng, symmetric);
     const MpmIceNodeWeights& nw = *node_weights_[s];
     const IceMaterialSpec& spec = is.materials[s];
-    const double min_mass = spec.tiny_rho * mm.density * V;
+    const bool axi = is.axisymmetric;  // per-radian masses: the axisymmetric node weights and V = r_c dx dy
+    std::vector<double> m_above;  // m_g^+ (axisymmetric only)
+    if (axi) {
+      node_mass_above(ng, p.mass, p.x, [&](auto&& fn) {
+        visit_stencils(st, [&](const auto& view) {
+          for (std::size_t i = 0; i < p.size(); ++i) view.weights(i, [&](std::size_t gi, double w) { fn(i, gi, w); });
+        });
+      }, m_above);
+      mpm_->sum_node_doubles(m_above);  // over the MPI ranks
+    }
     IceMaterialFields& f = fields[s];
     for (std::size_t pi = 0; pi < g.patches.size(); ++pi)
       for_each_cell_serial(g.patches[pi].cells_with_extra(), [&](int i, int j, int k) {
@@ -99,6 +109,9 @@ void MpmIceComponent::solid_state_to_cells() {
           if (symmetric[2 * d] && c[d] < 0) cm[d] = -1 - c[d], flip[d] = -1;
           if (symmetric[2 * d + 1] && c[d] >= g.cells[d]) cm[d] = 2 * g.cells[d] - 1 - c[d], flip[d] = -1;
         }
+        // The cell's volume: Cartesian V, or per radian r_c dx dy (axisymmetric).
+        const double Vc = axi ? (g.lower[0] + (cm[0] + 0.5) * g.dx[0]) * g.dx[0] * g.dx[1] : V;
+        const double min_mass = spec.tiny_rho * mm.density * Vc;
         double M = 0, MT = 0;
         Vec3 P = Vec3::Zero();
         for (int n = 0; n < 8; ++n) {
@@ -109,7 +122,11 @@ void MpmIceComponent::solid_state_to_cells() {
           // so its weight doubles per plane it lies on (x4 on an edge of two
           // planes), and its momentum normal to the plane is zero (the image
           // particles' normal velocities cancel the real ones').
-          const double w = nw.w[gi];
+          double w = nw.w[gi];
+          if (axi) {  // the share of m_g on the cell's side in r (CellProjection.h)
+            const double up = ng.mass[gi] > 0.0 ? m_above[gi] / ng.mass[gi] : 0.5;
+            w = axisymmetric_node_cell_weight(w, nw.plane[gi] & 1, (n & 1) == 0 ? up : 1.0 - up);
+          }
           Vec3 v = ng.velocity[gi];
           for (int d = 0; d < 3; ++d)
             if (nw.plane[gi] & (1 << d)) v[d] = 0;
@@ -140,7 +157,7 @@ void MpmIceComponent::solid_state_to_cells() {
           }
           if (mf > 0) u = pf / mf, T = tf / mf;
         }
-        f.rho_CC[pi](c) = M / V;
+        f.rho_CC[pi](c) = M / Vc;
         f.vel_CC[pi](c) = u;
         f.temp_CC[pi](c) = T;
         f.sp_vol_CC[pi](c) = 1.0 / spec.eos->density_at(ice_->press_CC()[pi](c), T);
@@ -203,13 +220,22 @@ void MpmIceComponent::add_internal_forces() {
     std::vector<Vec3> pressure_force(mm.grid.count(), Vec3::Zero());
     // In patch order at the band nodes (mpmice/BandScatter.h): the same bits on any rank count.
     PatchBand* band = mpm_->coupling_band(1);
+    // Axisymmetric: grad = (dS/dr, dS/dz, T = hoop factor) (mpm/Axisymmetric.h); the
+    // stress p_p I gives f_r = -V_p p_p (dS/dr + T) (its sigma_thth hoop term), f_z = -V_p p_p dS/dz.
+    const bool axi = mpm_->setup().flags.axisymmetric;
     visit_stencils(st, [&](const auto& view) {
       for_each_coupling_particle(st, mm.particles.size(), band, [&](std::size_t i) {
         const double vp = mm.particles.volume[i] * pp[i];
         const int P = coupling_tag(band, mm.particles.x[i]);
-        view.entries(i, [&](std::size_t gi, double, const Vec3& grad) {
-          Eigen::Map<Vec3>(band_target(band, P, gi, 0, pressure_force[gi].data())) -= vp * grad;
-        });
+        if (axi)
+          view.entries(i, [&](std::size_t gi, double, const Vec3& grad) {
+            Eigen::Map<Vec3>(band_target(band, P, gi, 0, pressure_force[gi].data())) -=
+                vp * Vec3(grad[0] + grad[2], grad[1], 0.0);
+          });
+        else
+          view.entries(i, [&](std::size_t gi, double, const Vec3& grad) {
+            Eigen::Map<Vec3>(band_target(band, P, gi, 0, pressure_force[gi].data())) -= vp * grad;
+          });
       });
     });
     if (band) {

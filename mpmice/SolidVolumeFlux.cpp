@@ -83,9 +83,13 @@ struct AxisFactors {
 
   // m_g += m_i S_gp for particle i, its nodes x fastest (the order of
   // visit_stencils, so the same sums); at(gi) the entry to add to
-  // (mpmice/BandScatter.h: the node, or a band partial).
+  // (mpmice/BandScatter.h: the node, or a band partial). m_above
+  // (axisymmetric, when given, with x the particle's position): the part
+  // from the particles with x_p >= the node's x (node_mass_above,
+  // mpmice/CellProjection.h), m_above indexed by node.
   template <int NN, class At>
-  void scatter_mass(std::size_t i, double mass, const NodeGrid& sg, At&& at) const {
+  void scatter_mass(std::size_t i, double mass, const NodeGrid& sg, At&& at, const Vec3* x = nullptr,
+                    double* m_above = nullptr) const {
     const std::size_t sy = std::size_t(sg.n[0]), sz = std::size_t(sg.n[0]) * std::size_t(sg.n[1]);
     const double* X = S[0].data() + i * NN;
     const double* Y = S[1].data() + i * NN;
@@ -96,6 +100,10 @@ struct AxisFactors {
         const std::size_t row = base + sy * std::size_t(b) + sz * std::size_t(c);
         const double y = Y[b], z = Z[c];
         for (int a = 0; a < NN; ++a) *at(row + std::size_t(a)) += mass * (X[a] * y * z);
+        if (m_above)
+          for (int a = 0; a < NN; ++a)
+            if ((*x)[0] >= sg.origin[0] + (first[0][i] + a) * sg.h[0])
+              m_above[row + std::size_t(a)] += mass * (X[a] * y * z);
       }
   }
 };
@@ -155,7 +163,8 @@ void MpmIceComponent::solid_mass_fluxes(double dt) {
     const Particles& p = mm.particles;
     const IntVec3 off = node_offset(g, ng);
     const std::array<bool, 6> symmetric = symmetry_faces(mm.bcs);
-    std::vector<double> node_mass;
+    std::vector<double> node_mass, node_above;  // node_above: m_g^+ (axisymmetric only)
+    const bool axi = ice_->setup().axisymmetric;
     // d_p = dt sum_g S_gp v_g.
     std::vector<Vec3> disp(p.size(), Vec3::Zero());
     double moved_cells = 0;  // the largest |d_p| along an axis, in cells
@@ -214,6 +223,12 @@ void MpmIceComponent::solid_mass_fluxes(double dt) {
           const IntVec3 node = c + off + IntVec3(n & 1, (n >> 1) & 1, (n >> 2) & 1);
           if ((node.array() < 0).any() || (node.array() >= sg.n.array()).any()) continue;
           const std::size_t gi = sg.index(node);
+          if (axi) {  // per-radian masses: the share of m_g on the cell's side in r (CellProjection.h)
+            const bool on_x = (symmetric[0] && node[0] == sg.extra[0]) || (symmetric[1] && node[0] == sg.n[0] - 1 - sg.extra[0]);
+            const double up = node_mass[gi] > 0.0 ? node_above[gi] / node_mass[gi] : 0.5;
+            sum += axisymmetric_node_cell_weight(wnode[gi], on_x, (n & 1) == 0 ? up : 1.0 - up) * node_mass[gi];
+            continue;
+          }
           sum += wnode[gi] * node_mass[gi];
         }
         M[ci(c)] = sum;
@@ -238,6 +253,14 @@ void MpmIceComponent::solid_mass_fluxes(double dt) {
         });
       });
       fold_symmetry_scalar(mm.bcs, sg, node_mass);
+      if (axi) {
+        node_mass_above(sg, p.mass, q.x, [&](auto&& fn) {
+          visit_stencils(st, [&](const auto& view) {
+            for (std::size_t i = 0; i < q.size(); ++i) view.weights(i, [&](std::size_t gi, double w) { fn(i, gi, w); });
+          });
+        }, node_above);
+        fold_symmetry_scalar(mm.bcs, sg, node_above);
+      }
       nodes_to_cells(M);
       return true;
     };
@@ -249,9 +272,12 @@ void MpmIceComponent::solid_mass_fluxes(double dt) {
     // M_c of the scratch particles' present positions, every cell with extra cells.
     auto project = [&](std::vector<double>& M) {
       if (!(fac.N && axis_ok[0] && axis_ok[1] && axis_ok[2])) return project_general(M);
-      if (fac.N == 2) scatter([&](std::size_t i, auto&& at) { fac.scatter_mass<2>(i, p.mass[i], sg, at); });
-      else scatter([&](std::size_t i, auto&& at) { fac.scatter_mass<3>(i, p.mass[i], sg, at); });
+      if (axi) node_above.assign(sg.count(), 0.0);
+      double* above = axi ? node_above.data() : nullptr;
+      if (fac.N == 2) scatter([&](std::size_t i, auto&& at) { fac.scatter_mass<2>(i, p.mass[i], sg, at, &q.x[i], above); });
+      else scatter([&](std::size_t i, auto&& at) { fac.scatter_mass<3>(i, p.mass[i], sg, at, &q.x[i], above); });
       fold_symmetry_scalar(mm.bcs, sg, node_mass);
+      if (axi) fold_symmetry_scalar(mm.bcs, sg, node_above);
       nodes_to_cells(M);
       return true;
     };
@@ -308,6 +334,14 @@ void MpmIceComponent::solid_mass_fluxes(double dt) {
         for_each_cell_serial({patch.lo, patch.hi + IntVec3::Unit(d)}, [&](int i, int j, int k) {
           const IntVec3 c(i, j, k);
           Fd(c) = all_ok ? flux[ci(c)] : 0.0;
+          // Axisymmetric: the per-radian mass F_rad through the face in ICE's
+          // Cartesian flux units (ice/RadialWeights.h: cell i gains (r_f/r_i) F_x
+          // and F_y of Cartesian content, i.e. F_rad dz/r_i): F_x = F_rad dz/r_f
+          // on r-faces (0 on the axis), F = F_rad dz/r_i on the others.
+          if (axi) {
+            const double r = g.lower[0] + (d == 0 ? i : i + 0.5) * g.dx[0];
+            Fd(c) = r > 0.0 ? Fd(c) * g.dx[2] / r : 0.0;
+          }
         });
       }
       std::swap(M0, M1);

@@ -3,13 +3,18 @@
 ICE/JWLpp8mmRS.ups (JWL++ rate, Murnaghan reactant, JWLC products, air).
 
 Usage:
-  tests/bench/rate_stick_size_effect.py BUILD_DIR run  R_MM DX_MM [OUT_ROOT] [--slab]
-  tests/bench/rate_stick_size_effect.py BUILD_DIR front R_MM DX_MM [OUT_ROOT] [--slab]
+  tests/bench/rate_stick_size_effect.py BUILD_DIR run  R_MM DX_MM [OUT_ROOT] [--slab | --axisym]
+  tests/bench/rate_stick_size_effect.py BUILD_DIR front R_MM DX_MM [OUT_ROOT] [--slab | --axisym]
   tests/bench/rate_stick_size_effect.py BUILD_DIR plot  RESULTS.csv PNG   (pure Python PNG)
 
 --slab: a 2-D planar slab of half-thickness R_MM (one cell along z, z+ a
-symmetry plane) instead of the quarter-symmetric 3-D stick (ICE has no
-axisymmetric form); output directory slabR..._dx....
+symmetry plane) instead of the quarter-symmetric 3-D stick; output
+directory slabR..._dx....
+--axisym: the cylinder of radius R_MM in axisymmetric ICE (session 21,
+<MPM><axisymmetric>: x = r, y = the stick's axis, one cell in z): the
+deck's x and y swapped (the stick along y, impact at -90 m/s along y onto
+the y- symmetry plane, x- the axis), the cylinder piece replaced by the box
+r < R (exact in (r, z)); output directory axiR..._dx....
 
 R_MM = 0 is the "infinite-diameter" stick the manual describes: one cell
 across, the y+ and z+ faces made symmetry planes, the whole cross-section
@@ -39,6 +44,32 @@ DECKS = os.path.normpath(os.path.join(HERE, "..", "..", "..", "shared", "decks")
 DECK = os.path.join(DECKS, "inputs", "ICE", "JWLpp8mmRS.ups")
 
 SYMMETRY_FACE = '<Face side = "{s}">\n <BCType id = "all" var = "symmetry" label = "Symmetric"> </BCType>\n</Face>'
+
+
+def make_axisym_deck(r_mm, dx_mm):
+    """The stick of radius r_mm as an axisymmetric run (x = r, y = axis)."""
+    text = open(DECK, encoding="iso-8859-1").read()
+    text = text.replace('href="inputs/', 'href="' + os.path.join(DECKS, "inputs") + "/")
+    dx = dx_mm * 1e-3
+    ny = int(round(0.1 / dx))                                  # along the axis (y)
+    nr = int(math.ceil(15.0 / 8.0 * r_mm / dx_mm - 1e-9))      # radial (x)
+    width = nr * dx
+    # The deck's x- and y- are symmetry planes, x+ and y+ open: swapping x and
+    # y keeps them (x- the axis, y- the impact wall); z+ becomes a symmetry plane.
+    text = re.sub(r'<Face side = "z\+">.*?</Face>', SYMMETRY_FACE.format(s="z+"), text, count=1, flags=re.S)
+    text = re.sub(r"<upper>.*?</upper>", f"<upper> [{width!r},1.e-1,{dx!r}] </upper>", text, count=1)
+    text = re.sub(r"<resolution>.*?</resolution>", f"<resolution> [{nr}, {ny}, 1] </resolution>", text, count=1)
+    text = re.sub(r'<cylinder label = "stick">\s*<bottom>.*?</cylinder>',
+                  f'<box label = "stick"> <min> [-1.0, 0.0, -1.0] </min> <max> [{r_mm * 1e-3!r}, 0.1, 1.0] </max> </box>',
+                  text, count=1, flags=re.S)
+    text = text.replace('<cylinder label = "stick">             </cylinder>', '<box label = "stick"> </box>')
+    text = re.sub(r"<velocity>\s*\[-90.0,0.0,0.0\]\s*</velocity>", "<velocity> [0.0,-90.0,0.0] </velocity>", text)
+    text = text.replace("<Grid>", "<MPM> <axisymmetric> true </axisymmetric> </MPM>\n    <Grid>", 1)
+    text = re.sub(r"<patches>.*?</patches>", "<patches> [1,1,1] </patches>", text, count=1)
+    saves = '<save label="F"/>\n<save label="press_CC"/>\n'
+    text = re.sub(r"(<outputInterval>.*?</outputInterval>).*?(</DataArchiver>)", r"\1\n" + saves + r"\2", text,
+                  count=1, flags=re.S)
+    return text, ny, nr
 
 
 def make_deck(r_mm, dx_mm, slab=False):
@@ -73,18 +104,19 @@ def make_deck(r_mm, dx_mm, slab=False):
     return text, nx, ny
 
 
-def out_dir(root, r_mm, dx_mm, slab=False):
-    return os.path.join(root, ("slab" if slab and r_mm > 0 else "") + f"R{r_mm:g}_dx{dx_mm:g}")
+def out_dir(root, r_mm, dx_mm, slab=False, axisym=False):
+    prefix = "axi" if axisym else "slab" if slab and r_mm > 0 else ""
+    return os.path.join(root, prefix + f"R{r_mm:g}_dx{dx_mm:g}")
 
 
-def extract_front(tephra, out, dx):
+def extract_front(tephra, out, dx, axisym=False):
     y = 0.5 * dx
-    cmd = [tephra, "extract", out, "--var", "F", "--material", "0", "--all-times",
-           "--line", f"{y},{y},{y},{0.1 - y},{y},{y}"]
+    line = f"{y},{y},{y},{y},{0.1 - y},{y}" if axisym else f"{y},{y},{y},{0.1 - y},{y},{y}"
+    cmd = [tephra, "extract", out, "--var", "F", "--material", "0", "--all-times", "--line", line]
     text = subprocess.run(cmd, check=True, capture_output=True, text=True).stdout
     rows = collections.defaultdict(list)
     for r in csv.DictReader(text.splitlines()):
-        rows[float(r["time"])].append((float(r["x"]), float(r["F"])))
+        rows[float(r["time"])].append((float(r["y" if axisym else "x"]), float(r["F"])))
     front = []
     for t in sorted(rows):
         xs = [x for x, f in rows[t] if f >= 0.5]
@@ -100,8 +132,8 @@ def fit_slope(pts):
     return sum((t - mt) * (x - mx) for t, x in pts) / sum((t - mt) ** 2 for t, _ in pts)
 
 
-def front_speed(tephra, out, dx):
-    front = extract_front(tephra, out, dx)
+def front_speed(tephra, out, dx, axisym=False):
+    front = extract_front(tephra, out, dx, axisym)
     window = [(t, x) for t, x in front if t >= 10e-6 - 1e-12 and x <= 0.09]
     late = [(t, x) for t, x in window if t >= 14e-6 - 1e-12]
     slope = lambda pts: fit_slope(pts) if len(pts) > 2 else float("nan")  # nan: no front (failed)
@@ -113,13 +145,14 @@ def main():
     tephra = os.path.join(build, "bin", "tephra")
     if mode == "plot":
         return plot(sys.argv[3], sys.argv[4])
-    args = [a for a in sys.argv[3:] if a != "--slab"]
+    args = [a for a in sys.argv[3:] if a not in ("--slab", "--axisym")]
     slab = "--slab" in sys.argv
+    axisym = "--axisym" in sys.argv
     r_mm, dx_mm = float(args[0]), float(args[1])
     root = args[2] if len(args) > 2 else "/tmp/rate_stick"
-    out = out_dir(root, r_mm, dx_mm, slab)
+    out = out_dir(root, r_mm, dx_mm, slab, axisym)
     if mode == "run":
-        text, nx, ny = make_deck(r_mm, dx_mm, slab)
+        text, nx, ny = make_axisym_deck(r_mm, dx_mm) if axisym else make_deck(r_mm, dx_mm, slab)
         os.makedirs(root, exist_ok=True)
         deck = out + ".ups"
         open(deck, "w").write(text)
@@ -127,7 +160,7 @@ def main():
         # spins at the row loops' barriers (session 15: the 1-patch 3-D stick
         # used 10x the CPU time of the serial run for the same steps).
         subprocess.run([tephra, deck, "--output", out, "--quiet", "--threads", "1"], check=True)
-    front, d10, d14 = front_speed(tephra, out, dx_mm * 1e-3)
+    front, d10, d14 = front_speed(tephra, out, dx_mm * 1e-3, axisym)
     for t, x in front[::5]:
         print(f"t = {t * 1e6:6.2f} us  front = {x * 1e3:6.2f} mm")
     print(f"R = {r_mm:g} mm, dx = {dx_mm:g} mm: D(10 us..) = {d10:.0f} m/s, D(14 us..) = {d14:.0f} m/s")
@@ -181,7 +214,8 @@ def plot(results, png):
     et al. experiments, red dotted line = D_CJ, blue = Tephra dx = 2 mm,
     green = Tephra dx = 1 mm, orange = dx = 0.5 mm, purple = 0.25 mm; discs
     and solid lines = 3-D quarter sticks at 1/R, squares and dotted lines =
-    2-D slabs (column geometry = slab, R_mm = half-thickness h) at 1/(2h)."""
+    2-D slabs (column geometry = slab, R_mm = half-thickness h) at 1/(2h);
+    diamonds and solid lines = axisymmetric ICE sticks (geometry = axisym) at 1/R."""
     W, H, L, R, T, B = 720, 480, 60, 20, 20, 50
     px = bytearray([255] * (W * H * 3))
     X = lambda x: L + x / 0.25 * (W - L - R)
@@ -203,7 +237,8 @@ def plot(results, png):
     def marker(x, y, c, kind):
         for a in range(-4, 5):
             for b in range(-4, 5):
-                if kind == "o" and a * a + b * b <= 16 or kind == "s" or kind == "^" and b >= 2 * abs(a) - 4:
+                if (kind == "o" and a * a + b * b <= 16 or kind == "s" or kind == "^" and b >= 2 * abs(a) - 4
+                        or kind == "d" and abs(a) + abs(b) <= 4):
                     dot(x + a, y + b, c)
 
     def text(x, y, s, c=(0, 0, 0)):
@@ -228,9 +263,9 @@ def plot(results, png):
     text((L + W) // 2 - 40, H - 18, "1/R (1/MM)")
     text(L + 4, 6, "D (M/S)")
     legend = [("GUILKEY 2007 SIM.", grey), ("SOUERS EXP.", black), ("D_CJ", (200, 0, 0))] + \
-             [(f"DX = {dx:g} MM", c) for dx, c in colours.items()] + [("DISC: 3-D AT 1/R", black), ("SQUARE: SLAB AT 1/(2H)", black)]
+             [(f"DX = {dx:g} MM", c) for dx, c in colours.items()] + [("DISC: 3-D AT 1/R", black), ("SQUARE: SLAB AT 1/(2H)", black), ("DIAMOND: AXISYM. AT 1/R", black)]
     for k, (name, c) in enumerate(legend):
-        text(W - R - 140, H - B - 110 + 11 * k, name, c)
+        text(W - R - 150, H - B - 121 + 11 * k, name, c)
     line(L, H - B, W - R, H - B, black)
     line(L, T, L, H - B, black)
     line(X(0), Y(D_CJ), X(0.25), Y(D_CJ), (200, 0, 0), dotted=True)
@@ -246,17 +281,20 @@ def plot(results, png):
     # half-thickness h at 1/(2h) (the cylinder radius with the same front
     # curvature on the axis, docs/validation/rate-stick-size-effect.md):
     # dotted lines, squares; the 1-D point (R = 0) starts both series.
-    for slab in (False, True):
+    # Axisymmetric ICE sticks (geometry = axisym, session 21) at 1/R: solid
+    # lines, diamonds.
+    for geo in ("", "slab", "axisym"):
+        slab = geo == "slab"
         for dx, c in colours.items():
             pts = sorted((0.0 if float(r["R_mm"]) == 0 else 1 / ((2 if slab else 1) * float(r["R_mm"])), float(r["D"]))
                          for r in rows if float(r["dx_mm"]) == dx
-                         and (float(r["R_mm"]) == 0 or (r.get("geometry", "").strip() == "slab") == slab))
-            if slab and all(a == 0 for a, _ in pts):
+                         and (float(r["R_mm"]) == 0 or r.get("geometry", "").strip() == geo))
+            if geo and all(a == 0 for a, _ in pts):
                 continue
             for (a, d), (b, e) in zip(pts, pts[1:]):
                 line(X(a), Y(d), X(b), Y(e), c, dotted=slab)
             for a, d in pts:
-                marker(X(a), Y(d), c, "s" if slab and a > 0 else "o")
+                marker(X(a), Y(d), c, ("s" if slab else "d" if geo else "o") if a > 0 else "o")
     write_png(png, W, H, px)
 
 

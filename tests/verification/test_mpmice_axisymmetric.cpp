@@ -1,0 +1,162 @@
+// Axisymmetric MPMICE (<MPM><axisymmetric>, x = r, y = z; session 21, issue 6):
+// inputs/mpmice/quiescent_block_axisym.ups, a steel cylinder on the axis
+// (r < 0.2 m, 0.15 < z < 0.35 m) in air in a closed can (r < 0.5 m), 10 x 10 x 1 cells.
+//  1. The projection uses ICE's volume measure: the solid's cell density
+//     M_c / (r_c dx dy) equals the steel's 8900 kg/m^3 in every cell inside
+//     the cylinder, the axis cell included (mpmice/CellProjection.h), and
+//     sum_c rho_CC r_c dx dy = sum_p m_p (the particles' per-radian mass).
+//  2. At rest it stays at rest for 1000 steps (the Cartesian quiescent test's bounds).
+//  3. Thrown along z at 5 m/s, or expanding radially (v_r = 50 r m/s), the
+//     particles' mass and the air's mass weighted by r are conserved (the
+//     solids' face mass fluxes enter ICE in its Cartesian flux units,
+//     mpmice/SolidVolumeFlux.cpp), and the air moves. Weak: the air's mass is
+//     conserved by the flux form whatever the solid fluxes; the pressure is
+//     printed, not asserted: the cylinder thrown along z reaches 117 kPa over
+//     p0 in its outer cell after 100 steps where the planar slab of the same
+//     section reaches 3 kPa (not understood; docs/mpmice.md "Axisymmetric").
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <sstream>
+
+#include "core/deck/DeckLoader.h"
+#include "core/grid/Loop.h"
+#include "mpmice/MpmIceComponent.h"
+#include "tests/support/IceRuns.h"
+#include "tests/support/TestPaths.h"
+
+namespace tephra {
+namespace {
+
+struct CoupledRun {
+  std::unique_ptr<Deck> deck;
+  std::unique_ptr<MpmIceComponent> c;
+  double time = 0;
+  int steps = 0;
+};
+
+CoupledRun make_run(const std::string& velocity = "") {
+  CoupledRun r;
+  r.deck = load_deck(test::source_dir() + "/inputs/mpmice/quiescent_block_axisym.ups");
+  if (!velocity.empty())
+    test::deck_node(r.deck->root, {"MaterialProperties", "MPM", "material", "geom_object", "velocity"}).text = velocity;
+  r.deck->root.finalize_parents();
+  r.c = make_mpmice_component(*r.deck);
+  r.c->initialize();
+  return r;
+}
+
+void run_to(CoupledRun& r, int max_steps) {
+  const DeckNode& time = r.deck->root.require_child("Time");
+  const double delt_init = time.get_double("delt_init", 0.0);
+  const double mult = time.get_double("timestep_multiplier", 1.0);
+  while (r.steps < max_steps) {
+    const double dt = (r.steps == 0 && delt_init > 0) ? delt_init : mult * r.c->stable_timestep();
+    ++r.steps;
+    r.c->advance(r.time, dt, r.steps);
+    r.time += dt;
+  }
+}
+
+// sum over the interior cells of rho_CC of material m times r_c dx dy (per
+// radian), leaving out cells below rho_min (the solid's trace tiny_rho rho0
+// in the empty cells: 1e-12 x 8900 x 0.0585 m^3/rad = 5.2e-10 kg/rad).
+double cell_mass(const MpmIceComponent& c, std::size_t m, double rho_min = 0) {
+  const Grid& g = c.ice().grid();
+  double sum = 0;
+  for_each_cell_serial(g.patches[0].cells(), [&](int i, int j, int k) {
+    const double rho = c.ice().fields()[m].rho_CC[0](i, j, k);
+    if (rho > rho_min) sum += rho * g.cell_center(i, j, k)[0] * g.dx[0] * g.dx[1];
+  });
+  return sum;
+}
+
+double particle_mass(const MpmIceComponent& c) {
+  double sum = 0;
+  for (double m : c.mpm().materials()[0].particles.mass) sum += m;
+  return sum;
+}
+
+TEST(MpmIceAxisymmetric, SolidCellDensityUsesTheAxisymmetricCellVolume) {
+  set_thread_count(1);
+  CoupledRun r = make_run();
+  const Grid& g = r.c->ice().grid();
+  ASSERT_TRUE(r.c->ice().setup().axisymmetric);
+  // Cells with r_c < 0.2 and 0.2 < z_c < 0.3 (j = 4, 5): inside the cylinder.
+  double worst = 0;
+  for (int j = 4; j <= 5; ++j)
+    for (int i = 0; i <= 3; ++i) worst = std::max(worst, std::abs(r.c->ice().fields()[0].rho_CC[0](i, j, 0) / 8900.0 - 1));
+  std::printf("[mpmice axisym] solid rho_CC inside the cylinder: max |rho/8900 - 1| = %.2e\n", worst);
+  EXPECT_LT(worst, 1e-12);
+  // The particles' mass per radian: 8900 x (0.2^2/2) x 0.2 = 35.6 kg/rad.
+  std::printf("[mpmice axisym] particle mass %.17g kg/rad, cell mass %.17g\n", particle_mass(*r.c),
+              cell_mass(*r.c, 0, 1e-6));
+  EXPECT_NEAR(particle_mass(*r.c), 8900 * 0.02 * 0.2, 1e-12);
+  EXPECT_NEAR(cell_mass(*r.c, 0, 1e-6), particle_mass(*r.c), 1e-13 * particle_mass(*r.c));
+  (void)g;
+}
+
+// The bound on the cell velocities: the solid's projected density carries a
+// relative round-off ~1e-15 (6.7e-16 measured above), i.e. a pressure
+// round-off K 1e-15 = 1.2e-6 Pa with the steel's K = 1.17e9 Pa, whose
+// acoustic velocity in the air is 1.2e-6/(rho c) = 1.2e-6/(1.18 x 347) = 2.9e-9 m/s.
+// Measured: 2.39e-10 m/s after 250 steps, 2.23e-10 after 1000 (and 2000):
+// bounded, not growing (the Cartesian block, 0.1 m cells, stays below 1e-10).
+TEST(MpmIceAxisymmetric, QuiescentCylinderInAirStaysAtRest) {
+  set_thread_count(1);
+  CoupledRun r = make_run();
+  const Grid& g = r.c->ice().grid();
+  auto deviations = [&](double& dp, double& du, double& dv) {
+    dp = du = dv = 0;
+    for_each_cell_serial(g.patches[0].cells_with_extra(), [&](int i, int j, int k) {
+      dp = std::max(dp, std::abs(r.c->ice().press_CC()[0](i, j, k) / 101325.0 - 1));
+      for (std::size_t m = 0; m < r.c->ice().fields().size(); ++m)
+        du = std::max(du, r.c->ice().fields()[m].vel_CC[0](i, j, k).cwiseAbs().maxCoeff());
+    });
+    for (const Vec3& v : r.c->mpm().materials()[0].particles.v) dv = std::max(dv, v.cwiseAbs().maxCoeff());
+  };
+  double dp250, du250, dv250, dp, du, dv;
+  run_to(r, 250);
+  deviations(dp250, du250, dv250);
+  run_to(r, 1000);
+  deviations(dp, du, dv);
+  std::printf("[mpmice axisym] quiescent: max |p/p0 - 1| %.2e / %.2e, max |u_cell| %.2e / %.2e m/s, "
+              "max |v_p| %.2e / %.2e m/s after 250 / 1000 steps (t = %.4g s)\n",
+              dp250, dp, du250, du, dv250, dv, r.time);
+  EXPECT_LT(dp, 1e-10);
+  EXPECT_LT(du, 1e-9);
+  EXPECT_LE(du, 1.5 * du250);  // not growing
+  EXPECT_LT(dv, 1e-10);
+}
+
+TEST(MpmIceAxisymmetric, MovingCylinderConservesTheWeightedMass) {
+  set_thread_count(1);
+  for (const char* velocity : {"[0.0, 5.0, 0.0]", "radial"}) {
+    const bool radial = std::string(velocity) == "radial";
+    CoupledRun r = make_run(radial ? "" : velocity);
+    if (radial)  // v_r = 50 r: a uniformly expanding cylinder (10 m/s at its surface)
+      for (std::size_t i = 0; i < r.c->mpm().materials()[0].particles.size(); ++i) {
+        Particles& p = r.c->mpm().materials()[0].particles;
+        p.v[i] = Vec3(50.0 * p.x[i][0], 0, 0);
+      }
+    const double m_air0 = cell_mass(*r.c, 1), m_p0 = particle_mass(*r.c);
+    run_to(r, 200);
+    const double m_air1 = cell_mass(*r.c, 1), m_p1 = particle_mass(*r.c);
+    double air_speed = 0, dp = 0;
+    const Grid& g = r.c->ice().grid();
+    for_each_cell_serial(g.patches[0].cells(), [&](int i, int j, int k) {
+      air_speed = std::max(air_speed, r.c->ice().fields()[1].vel_CC[0](i, j, k).norm());
+      dp = std::max(dp, std::abs(r.c->ice().press_CC()[0](i, j, k) - 101325.0));
+    });
+    std::printf("[mpmice axisym] %s: max |p - p0| %.3g Pa\n", velocity, dp);
+    std::printf("[mpmice axisym] %s, 200 steps: air mass sum r rho V change %.2e (relative), particle mass %.2e, "
+                "max air speed %.3g m/s\n",
+                velocity, std::abs(m_air1 / m_air0 - 1), std::abs(m_p1 / m_p0 - 1), air_speed);
+    EXPECT_LT(std::abs(m_air1 / m_air0 - 1), 1e-12);
+    EXPECT_EQ(m_p1, m_p0);
+    EXPECT_GT(air_speed, 0.1);
+  }
+}
+
+}  // namespace
+}  // namespace tephra
