@@ -11,10 +11,11 @@
 // Observed: 1.0401e-3, 4.8128e-4, 1.4085e-4, orders 1.11 and 1.77 (6 s).
 // Not established as second order: one level finer (128 cells, 16087
 // particles, 26 s, not run here) gives 1.0759e-4, order 0.39 (16 -> 32 is
-// pre-asymptotic with 4 cells across the ring; 64 -> 128 stalls). Cause not
-// found yet; candidates: the curved free faces, which the seeded particles
-// and their square CPDI domains follow only to O(h) (a staircase), and the
-// large strain (26% hoop stretch at the inner face). docs/mpm-convergence.md.
+// pre-asymptotic with 4 cells across the ring; 64 -> 128 stalls). Cause
+// (session 21): the staircase of the seeded curved faces dominates (the
+// conforming-seeding test below cuts the error 10x), and what is left is the
+// fixed-ppc quadrature error (docs/mpm-convergence.md "ExpandingRing,
+// conforming seeding").
 // The bounds bracket the observed orders less 0.1-0.2.
 #include <gtest/gtest.h>
 
