@@ -185,5 +185,31 @@ TEST(MpmContactLR, CornerCloudNormalTiltsAsTheRegularisedFitDoes) {
   EXPECT_LT(std::abs(n[1]), 1e-12);
 }
 
+// Vaango's Symmetric BC on the regression normal (SerialMPM::
+// computeLogisticRegression: MPMBoundCond "Symmetric" on gNormAlphaToBeta,
+// then renormalised): on a symmetry face's node plane the component along
+// the face's axis is zeroed. Closed forms on a 5 x 4 x 3 node grid with one
+// extra layer (planes at index 1 and n - 2), symmetry on y- and x+:
+//   node (2, 1, 1) on y-: (0, 0.6, 0.8) -> (0, 0, 1);
+//   node (2, 2, 1) off every plane: unchanged;
+//   node (3, 1, 1) on y- and x+: (0.6, 0.8, 0) -> 0 (nothing left);
+//   node (3, 2, 1) on x+ (x- is not symmetric): (0.6, 0, 0.8) -> (0, 0, 1).
+TEST(MpmContactLR, SymmetricBoundaryConditionOnTheNormal) {
+  NodeGrid g;
+  g.n = IntVec3(5, 4, 3);
+  g.extra = IntVec3(1, 1, 1);
+  std::array<bool, 6> sym{};
+  sym[2] = true, sym[1] = true;
+  auto at = [&](int i, int j, int k, Vec3 n) {
+    symmetric_normal(g, g.index(IntVec3(i, j, k)), sym, n);
+    return n;
+  };
+  EXPECT_LT((at(2, 1, 1, Vec3(0, 0.6, 0.8)) - Vec3(0, 0, 1)).norm(), 1e-15);
+  EXPECT_EQ(at(2, 2, 1, Vec3(0, 0.6, 0.8)), Vec3(0, 0.6, 0.8));
+  EXPECT_LT(at(3, 1, 1, Vec3(0.6, 0.8, 0)).norm(), 1e-15);
+  EXPECT_LT((at(3, 2, 1, Vec3(0.6, 0, 0.8)) - Vec3(0, 0, 1)).norm(), 1e-15);
+  EXPECT_EQ(at(1, 2, 1, Vec3(0.6, 0, 0.8)), Vec3(0.6, 0, 0.8));  // x- plane: not a symmetry face
+}
+
 }  // namespace
 }  // namespace tephra
