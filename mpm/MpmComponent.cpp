@@ -338,6 +338,9 @@ void MpmComponent::exchange_momentum(ContactStage stage, double t, double dt, bo
     c.stencils.clear();
     for (const MpmMaterial& m : mats) c.particles.push_back(&m.particles), c.stencils.push_back(&m.stencils);
     c.h = setup_.grid.dx;
+    for (int f = 0; f < 6; ++f)
+      c.symmetry_face[f] = !mats.empty() && f < 2 * fold_dims(setup_.flags) &&
+                           mats[0].bcs.face[f].kind == FaceVelocityBC::Kind::Symmetry;
     c.canonical = periodic_.active() ? &periodic_.canonical : nullptr;
     c.t = t;
     c.dt = dt;

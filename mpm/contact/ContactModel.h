@@ -12,6 +12,7 @@
 // friction models compute a normal per material; their corrections are equal
 // and opposite only when the normals are.) The specified/rigid model is the
 // exception by design: its master body is driven from outside.
+#include <array>
 #include <memory>
 #include <string>
 #include <vector>
@@ -50,6 +51,9 @@ struct ContactNodes {
   // (mpm/PeriodicGrid.h); null otherwise. Read by friction_LR, whose point
   // clouds gather the particles of all aliases.
   const std::vector<std::size_t>* canonical = nullptr;
+  // Faces (0 x-, 1 x+, ... 5 z+) that are symmetry planes for material 0
+  // (Vaango applies material 0's Symmetric BC to friction_LR's normal).
+  std::array<bool, 6> symmetry_face{};
   Vec3 h = Vec3::Ones();  // cell size
   double t = 0.0;         // time at the start of the step
   double dt = 0.0;

@@ -92,6 +92,12 @@ class FrictionLRContact final : public ContactModel {
 // VT eqs. 1.132-1.144 with penalties (lambda_n, lambda_n, lambda_n, 0).
 Vec3 logistic_regression_normal(const std::vector<Vec3>& x, const std::vector<double>& label, double lambda_n);
 
+// Vaango's Symmetric BC on friction_LR's normal: at a node on the plane of a
+// face with symmetry_face[f] (faces 0 x-, 1 x+, ..., 5 z+; the plane is the
+// first interior node layer, g.extra from the edge), the component of n along
+// that face's axis is zeroed and n renormalised (zero if nothing is left).
+void symmetric_normal(const NodeGrid& g, std::size_t node, const std::array<bool, 6>& symmetry_face, Vec3& n);
+
 // <type>nodal_svf</type>: drag between two materials (NodalSvfContact.cpp).
 class NodalSvfContact final : public ContactModel {
  public:

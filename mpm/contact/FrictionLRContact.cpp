@@ -36,8 +36,11 @@
 //     1/(100 dx) metres; Tephra uses ff = 1.)
 // v_cm is the mass-weighted velocity of all contacting materials at the node,
 // and the volume constraint is as in friction. No traction test (as Vaango).
-// The normal is not mirrored at symmetry planes (Vaango applies its
-// Symmetric BC to it).
+// Symmetry planes (Vaango: MPMBoundCond "Symmetric" on gNormAlphaToBeta
+// with material 0's BCs, then renormalised): at a node on the plane of a
+// symmetry face the normal's component through the face is set to zero and
+// n renormalised; a normal along the face's axis becomes zero, and then no
+// pair at that node approaches (dv . n = 0), as in Vaango.
 #include <algorithm>
 #include <cmath>
 
@@ -67,6 +70,18 @@ Vec3 node_position(const NodeGrid& g, std::size_t node) {
 }
 
 }  // namespace
+
+void symmetric_normal(const NodeGrid& g, std::size_t node, const std::array<bool, 6>& symmetry_face, Vec3& n) {
+  const IntVec3 c(int(node % std::size_t(g.n[0])), int((node / std::size_t(g.n[0])) % std::size_t(g.n[1])),
+                  int(node / (std::size_t(g.n[0]) * std::size_t(g.n[1]))));
+  bool changed = false;
+  for (int f = 0; f < 6; ++f) {
+    const int d = f / 2;
+    if (!symmetry_face[f] || c[d] != (f % 2 == 0 ? g.extra[d] : g.n[d] - 1 - g.extra[d])) continue;
+    n[d] = 0.0, changed = true;
+  }
+  if (changed) n /= n.norm() + 1e-100;
+}
 
 Vec3 logistic_regression_normal(const std::vector<Vec3>& x, const std::vector<double>& label, double lambda_n) {
   const Vec4 lambda(lambda_n, lambda_n, lambda_n, 0.0);
@@ -162,7 +177,8 @@ void FrictionLRContact::exchange(ContactStage, ContactNodes& nodes) const {
       x.push_back(c.offset);
       label.push_back(c.material == a ? -1.0 : 1.0);
     }
-    const Vec3 n = logistic_regression_normal(x, label, lambda_n);
+    Vec3 n = logistic_regression_normal(x, label, lambda_n);
+    symmetric_normal(grid, g, nodes.symmetry_face, n);
     // 4. Prominences along n from the particle domains' face centres.
     for (int m : materials_) prominence[m] = m == a ? -9e99 : 9e99;
     for (const CloudPoint& c : pts) {

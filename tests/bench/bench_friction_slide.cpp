@@ -4,6 +4,7 @@
 // Coulomb contact type and two resolutions. Prints the measured acceleration
 // of the block against the closed form. Not a ctest; figures for docs/mpm-contact.md.
 //   usage: bench_friction_slide [type ...] [--refine N] [--interp NAME] [--extra N] [--slide-only]
+//          [--incline-only] [--mu MU] (one incline mu instead of 0, 0.15, 0.5)
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -19,12 +20,15 @@ int main(int argc, char** argv) {
   std::vector<std::string> types;
   std::vector<int> refines = {1, 2};
   std::string interp = "linear";
-  bool slide_only = false;
+  bool slide_only = false, incline_only = false;
+  std::vector<double> mus = {0.0, 0.15, 0.5};
   int extra = 0;
   for (int i = 1; i < argc; ++i) {
     if (!std::strcmp(argv[i], "--refine") && i + 1 < argc) refines = {std::atoi(argv[++i])};
     else if (!std::strcmp(argv[i], "--interp") && i + 1 < argc) interp = argv[++i];
     else if (!std::strcmp(argv[i], "--slide-only")) slide_only = true;
+    else if (!std::strcmp(argv[i], "--incline-only")) incline_only = true;
+    else if (!std::strcmp(argv[i], "--mu") && i + 1 < argc) mus = {std::atof(argv[++i])};
     else if (!std::strcmp(argv[i], "--extra") && i + 1 < argc) extra = std::atoi(argv[++i]);
     else types.push_back(argv[i]);
   }
@@ -32,6 +36,7 @@ int main(int argc, char** argv) {
   const double g = kFrictionSceneG;
   for (const std::string& type : types)
     for (int refine : refines) {
+      if (!incline_only) {
       FrictionScene s;
       s.contact = type, s.refine = refine, s.interpolator = interp, s.extra_cells = extra;
       s.mu = 0.3, s.u0 = 1.0, s.heating = true;
@@ -41,8 +46,9 @@ int main(int argc, char** argv) {
                   type.c_str(), refine, -r.slope(0.0), s.mu * g, r.u.back(), s.u0 - s.mu * g * s.end_time, r.heat / Q,
                   r.ke_lost / r.heat);
       std::fflush(stdout);
+      }
       if (slide_only) continue;
-      for (double mu : {0.0, 0.15, 0.5}) {
+      for (double mu : mus) {
         FrictionScene q;
         q.contact = type, q.refine = refine, q.interpolator = interp, q.extra_cells = extra;
         q.mu = mu, q.theta = 0.3, q.u0 = 0.0;

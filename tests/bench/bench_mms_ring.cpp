@@ -3,7 +3,8 @@
 //   bench_mms_ring [cells,cells,...] [interpolator] [ppc] [multiplier] [end_time]
 // (defaults "16,32,64", cpdi, 2, the deck's 0.2, 0.005 s), one OpenMP thread,
 // and the error by distance to the curved faces; TEPHRA_RING_CUBIC_Z=1 makes
-// the z cell as thick as an x cell.
+// the z cell as thick as an x cell; TEPHRA_RING_CONFORMING=1 seeds the ring in
+// (R, theta) with the curved faces at particle faces (MmsRunOptions::conforming_ring).
 // The study of docs/mpm-convergence.md ("ExpandingRing").
 #include <cmath>
 #include <cstdio>
@@ -35,6 +36,7 @@ int main(int argc, char** argv) {
     o.cubic_z = std::getenv("TEPHRA_RING_CUBIC_Z") != nullptr;
     o.ring_inner = 0.4;
     o.ring_outer = 0.6;
+    o.conforming_ring = std::getenv("TEPHRA_RING_CONFORMING") != nullptr;
     const MmsRunResult r = run_axis_aligned(o);
     std::printf("ring %s cells %4d particles %7ld steps %5d %8.2f s  L2 error %.4e", o.interpolator.c_str(), c,
                 r.particles, r.steps, r.seconds, r.error);

@@ -29,6 +29,15 @@ struct MmsRunOptions {
   // error of the particles by their distance (in x cells) to the curved
   // faces R = ring_inner, ring_outer: [0,1), [1,2), [2,3), >= 3 cells.
   double ring_inner = 0.0, ring_outer = 0.0;
+  // Ring decks: replace the deck's seeding (particles on the grid-aligned
+  // lattice inside the ring, a staircase along the curved faces) by one
+  // conforming to the faces: n_r = (ring_outer - ring_inner) / delta layers
+  // in R, delta = h / ppc, and in each layer round((pi/2) R_i / delta)
+  // sectors in theta over the quarter ring; each particle an annular sector
+  // of volume R_i dR dtheta h_z (so the particles fill the quarter ring
+  // exactly, R = ring_inner and ring_outer are particle faces) with the
+  // CPDI domain spanned by dR e_R and R_i dtheta e_theta (same volume).
+  bool conforming_ring = false;
   // AxisAligned only: the mirror-extended problem without boundaries. The
   // body and grid become [-1, 1]^3, periodic in all directions (no extra
   // cells, no BCs), with 2 cells per cell of the unit cube: u_i = A sin(pi X_i)
@@ -44,6 +53,7 @@ struct MmsRunResult {
   int steps = 0;
   double band_rms[4] = {0, 0, 0, 0};  // with ring_outer > 0: see MmsRunOptions
   long band_count[4] = {0, 0, 0, 0};
+  double volume0 = 0.0;  // sum of the particles' reference volumes V0 [m^3]
 };
 
 MmsRunResult run_axis_aligned(const MmsRunOptions& options);
