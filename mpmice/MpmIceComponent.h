@@ -91,6 +91,10 @@ class MpmIceComponent final : public Component, private MpmCoupling, private Sol
   // the nodes, the solid's cell changes du, dT.
   std::vector<std::shared_ptr<const MpmIceNodeWeights>> node_weights_;
   std::vector<double> node_mT_;
+  // Axisymmetric: per MPM material, per node, the share m_g^+/m_g of its mass
+  // projected to the cell above it in r (solid_state_to_cells; used by
+  // cell_changes_to_nodes_and_particles, mpmice/NodeAverages.h).
+  std::vector<std::vector<double>> node_share_above_;
   CellVectors change_du_;
   CellScalars change_dT_;
   // The step-redo snapshot's buffers, kept across steps (advance(); one

@@ -107,11 +107,12 @@ std::unique_ptr<MpmIceComponent> make_mpmice_component(const Deck& deck) {
   if (s.axisymmetric && !s.models.empty())
     root.require_child("Models").missing_feature("<Models> with <axisymmetric> in MPMICE (the burn models' mass "
                                                  "conversion is not axisymmetric yet)");
-  // Verified for solids at rest only (test_mpmice_axisymmetric): a cylinder moving along the axis
-  // raises the air pressure about 40x more than the planar slab of the same section (docs/mpmice.md).
+  // Verified for a solid at rest and a cylinder translating along the axis
+  // (test_mpmice_axisymmetric: the air pressure at the planar slab's scale);
+  // a radially moving solid only for mass conservation (docs/mpmice.md).
   if (s.axisymmetric)
-    log::warning("axisymmetric MPMICE: verified for solids at rest only; with moving solids the air "
-                 "pressure near the solid is not trustworthy yet (docs/mpmice.md, \"Axisymmetric MPMICE\")");
+    log::warning("axisymmetric MPMICE: verified for solids at rest and translating along the axis only; "
+                 "radial solid motion is not verified (docs/mpmice.md, \"Axisymmetric MPMICE\")");
   if (s.lodi.enabled) root.require_child("Grid").missing_feature("LODI boundary conditions in MPMICE");
   auto ice = std::make_unique<IceComponent>(std::move(s));
   return std::make_unique<MpmIceComponent>(std::move(mpm), std::move(ice), p_ref);

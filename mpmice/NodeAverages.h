@@ -30,6 +30,12 @@ template <>
 inline Vec3 zero_of<Vec3>() { return Vec3::Zero(); }
 
 // out[gi] = 1/8 sum_8 f(clamped cell) at the nodes of g's patches with want(gi).
+// share_above (axisymmetric runs, else null): per node of ng, the share of
+// its mass the projection gave the cell above it in r (CellProjection.h);
+// the cell above then weighs share/4, the one below (1 - share)/4, y and z
+// keeping their 1/2: the node takes back the cells' changes with the weights
+// its mass went to them (momentum conserved; a node whose mass all went to
+// the cell below does not take the change of the trace solid above it).
 //
 // The storage position of cell (x, y, z) is linear in each index
 // (GridArray::offset), offset = base + X(x) + Y(y) + Z(z); the clamped cell
@@ -40,7 +46,8 @@ inline Vec3 zero_of<Vec3>() { return Vec3::Zero(); }
 // c>>1&1, c>>2&1)) from the same values: the same bits.
 template <class T, class Want>
 void own_node_averages(const Grid& g, const PatchFields<CellField<T>>& f, const NodeGrid& ng, const IntVec3& off,
-                       const IndexRange& clamp, Want&& want, std::vector<T>& out) {
+                       const IndexRange& clamp, Want&& want, std::vector<T>& out,
+                       const std::vector<double>* share_above = nullptr) {
   for (std::size_t pi = 0; pi < g.patches.size(); ++pi) {
     const Patch& P = g.patches[pi];
     IntVec3 lo, hi;
@@ -76,7 +83,12 @@ void own_node_averages(const Grid& g, const PatchFields<CellField<T>>& f, const 
           if (!want(gi)) continue;
           const std::ptrdiff_t* X = &terms[0][2 * static_cast<std::size_t>(i - lo[0])];
           T s = zero_of<T>();
-          for (int c = 0; c < 8; ++c) s += 0.125 * data[X[c & 1] + Y[(c >> 1) & 1] + Z[(c >> 2) & 1]];
+          if (share_above) {
+            const double wx[2] = {0.25 * (*share_above)[gi], 0.25 * (1.0 - (*share_above)[gi])};
+            for (int c = 0; c < 8; ++c) s += wx[c & 1] * data[X[c & 1] + Y[(c >> 1) & 1] + Z[(c >> 2) & 1]];
+          } else {
+            for (int c = 0; c < 8; ++c) s += 0.125 * data[X[c & 1] + Y[(c >> 1) & 1] + Z[(c >> 2) & 1]];
+          }
           out[gi] = s;
         }
       }
