@@ -66,6 +66,7 @@ void PatchBand::prepare(const Grid& level, const NodeGrid& g, int reach) {
       }
   pair_first_.push_back(std::uint32_t(pair_patch_.size()));
   buffer_.assign(pair_patch_.size() * std::size_t(kMaxWidth), 0.0);
+  written_ = false;
   // Cell tags: the reach cube [c - R, c + 1 + R] of cell c holds a band node?
   // A summed-volume table of the band flags answers each cell in O(1).
   const std::size_t sx = std::size_t(g.n[0]) + 1, sy = std::size_t(g.n[1]) + 1;
@@ -178,6 +179,15 @@ void PatchBand::reduce(int width, const std::function<void(std::size_t gi, const
     }
   }
   double s[kMaxWidth];
+  // One process, no partial() since the buffer was all +0 (prepare, or the
+  // zeroing below): every ordered sum is +0 + +0 + ... = +0, so sum() gets
+  // +0s without reading the buffer (the same calls, the same bits).
+  if (!gather_ && !written_) {
+    for (std::size_t c = 0; c < w; ++c) s[c] = 0.0;
+    for (std::size_t k = 0; k < band_node_.size(); ++k) sum(band_node_[k], s);
+    return;
+  }
+  written_ = false;  // zeroed below
   for (std::size_t k = 0; k < band_node_.size(); ++k) {
     for (std::size_t c = 0; c < w; ++c) s[c] = 0.0;
     for (std::uint32_t j = pair_first_[k]; j < pair_first_[k + 1]; ++j) {  // ascending patch id

@@ -86,7 +86,10 @@ class PatchBand {
   // Band node index of node gi, or -1.
   int slot(std::size_t gi) const { return node_slot_[gi]; }
   // The partial (width doubles) of band node k for patch P (P's reach box holds the node).
+  // Marks the buffer written (any thread; relaxed: reduce() runs after the
+  // scatter's parallel region has ended, whose barrier orders the stores).
   double* partial(int k, int P) {
+    __atomic_store_n(&written_, true, __ATOMIC_RELAXED);
     std::uint32_t j = pair_first_[std::size_t(k)];
     while (pair_patch_[j] != P) ++j;
     return buffer_.data() + std::size_t(j) * kMaxWidth;
@@ -120,6 +123,7 @@ class PatchBand {
   std::vector<std::uint32_t> pair_first_;   // band node k's pairs: [pair_first_[k], pair_first_[k+1])
   std::vector<int> pair_patch_;             // ascending patch id within a node
   std::vector<double> buffer_;              // pairs x kMaxWidth partials
+  bool written_ = false;                    // partial() called since the buffer was last all +0
   std::vector<int> owner_;
   int me_ = 0;
   std::function<std::vector<double>(const std::vector<double>&)> gather_;

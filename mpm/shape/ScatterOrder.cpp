@@ -87,17 +87,34 @@ void ScatterOrder::finish() {
 void ScatterOrder::sort_blocks_by_id(const long long* id) {
   if (particles == 0) return;
   const long blocks = long(block.size()) - 1;
+  // finish() left index[j] == j everywhere (displaced == 0): then a block
+  // already in ascending id keeps index[j] == j and adds nothing to `moved`.
+  const bool identity = displaced == 0;
   std::size_t moved = 0;
 #pragma omp parallel for schedule(static) reduction(+ : moved) if (particles >= 4096)
   for (long b = 0; b < blocks; ++b) {
     std::uint32_t* first = index.data() + block[std::size_t(b)];
     std::uint32_t* last = index.data() + block[std::size_t(b) + 1];
-    for (std::uint32_t* a = first + 1; a < last; ++a) {
-      const std::uint32_t v = *a;
-      const long long key = id[v];
-      std::uint32_t* c = a;
-      for (; c > first && id[*(c - 1)] > key; --c) *c = *(c - 1);
-      *c = v;
+    // Most steps no particle changes block and the block is already in
+    // ascending id: one read-only pass finds that, and the insertion sort
+    // (which would move nothing) and the recount are skipped. Same result
+    // either way: the insertion sort leaves an ascending block unchanged.
+    bool ascending = true;
+    long long prev = id[*first];
+    for (const std::uint32_t* a = first + 1; a < last; ++a) {
+      const long long k = id[*a];
+      if (k < prev) { ascending = false; break; }
+      prev = k;
+    }
+    if (ascending && identity) continue;
+    if (!ascending) {
+      for (std::uint32_t* a = first + 1; a < last; ++a) {
+        const std::uint32_t v = *a;
+        const long long key = id[v];
+        std::uint32_t* c = a;
+        for (; c > first && id[*(c - 1)] > key; --c) *c = *(c - 1);
+        *c = v;
+      }
     }
     for (std::uint32_t* a = first; a < last; ++a) moved += *a != std::uint32_t(a - index.data());
   }

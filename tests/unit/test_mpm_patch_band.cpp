@@ -21,6 +21,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
+#include <map>
 #include <numeric>
 #include <random>
 
@@ -312,6 +314,54 @@ TEST(PatchBand, NodeBoxTestIsTheBruteForceScan) {
     EXPECT_GT(clear, 0u) << "n = " << n;
     EXPECT_LT(clear, g.count()) << "n = " << n;
   }
+}
+
+}  // namespace
+}  // namespace tephra
+
+namespace tephra {
+namespace {
+
+// reduce() without a partial() since the buffer was last zeroed takes a
+// shortcut (no buffer read): it must make the same calls with +0 sums as the
+// full pass. Sequence: reduce untouched (all +0, every band node once), write
+// one patch's partial of one node, reduce (+0 + 0.5), reduce again (zeroed: all +0, not -0).
+TEST(PatchBand, ReduceWithoutPartialsGivesPositiveZeros) {
+  const Grid L = level();
+  const NodeGrid g = nodes(L);
+  PatchBand band;
+  band.prepare(L, g, 1);
+  ASSERT_TRUE(band.active());
+  auto collect = [&](int width) {
+    std::map<std::size_t, std::vector<double>> got;
+    band.reduce(width, [&](std::size_t gi, const double* s) { got[gi].assign(s, s + width); });
+    return got;
+  };
+  auto all_positive_zero = [](const std::map<std::size_t, std::vector<double>>& got) {
+    for (const auto& [gi, s] : got)
+      for (double v : s)
+        if (v != 0.0 || std::signbit(v)) return false;
+    return true;
+  };
+  auto first = collect(3);
+  EXPECT_EQ(first.size(), band.band_nodes());
+  EXPECT_TRUE(all_positive_zero(first));
+  // The lowest band node and the patch of the cell above it (that patch's
+  // reach box holds the node; tag() >= 0 since the cell's reach cube holds it).
+  const std::size_t gi = band.band_node_index().front();
+  const int k = band.slot(gi);
+  const int i0 = int(gi % std::size_t(g.n[0])), j0 = int((gi / std::size_t(g.n[0])) % std::size_t(g.n[1])),
+            k0 = int(gi / (std::size_t(g.n[0]) * std::size_t(g.n[1])));
+  const int P = band.tag(g.origin + Vec3((i0 + 0.5) * g.h[0], (j0 + 0.5) * g.h[1], (k0 + 0.5) * g.h[2]));
+  ASSERT_GE(P, 0);
+  band.partial(k, P)[1] = 0.5;
+  auto second = collect(3);
+  EXPECT_EQ(second.size(), band.band_nodes());
+  EXPECT_EQ(second[gi][1], 0.5);  // the one partial, summed from +0
+  EXPECT_EQ(second[gi][0], 0.0);
+  auto third = collect(3);
+  EXPECT_EQ(third.size(), band.band_nodes());
+  EXPECT_TRUE(all_positive_zero(third));
 }
 
 }  // namespace

@@ -11,6 +11,7 @@
 //   * P2G with 1, 2 and 3 threads gives the same bits (cpdi included).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <map>
 #include <random>
 #include <set>
@@ -158,6 +159,52 @@ TEST(MpmScatterOrder, FlatStencils) {
     EXPECT_GE(span_y, 3);  // the sheared domains reach beyond the gimp footprint
     check_order(c, s, span_y - 1, span_z - 1);
     check_threads(c, s);
+  }
+}
+
+}  // namespace
+}  // namespace tephra
+
+namespace tephra {
+namespace {
+
+// ScatterOrder::sort_blocks_by_id against a reference: inside each block of
+// finish()'s order, std::stable_sort by id; displaced = #{j : index[j] != j}.
+// Cases cover its shortcut (a block already ascending in id, with and without
+// finish() leaving index[j] == j) and the insertion-sort path.
+void check_sort_blocks(const std::vector<std::uint32_t>& keys, const std::vector<long long>& id, int threads) {
+  Threads t(threads);
+  ScatterOrder o;
+  o.prepare(keys.size(), 8, 8, 2, 2);  // w = 1: 8 x 8 blocks, keys < 4 * 64
+  o.key = keys;
+  o.finish();
+  std::vector<std::uint32_t> expect = o.index;
+  for (std::size_t b = 0; b + 1 < o.block.size(); ++b)
+    std::stable_sort(expect.begin() + o.block[b], expect.begin() + o.block[b + 1],
+                     [&](std::uint32_t a, std::uint32_t c) { return id[a] < id[c]; });
+  std::size_t moved = 0;
+  for (std::size_t j = 0; j < expect.size(); ++j) moved += expect[j] != j;
+  o.sort_blocks_by_id(id.data());
+  EXPECT_EQ(o.index, expect);
+  EXPECT_EQ(o.displaced, moved);
+}
+
+TEST(MpmScatterOrder, SortBlocksByIdIsTheStableSortPerBlock) {
+  const std::size_t np = 6000;  // >= 4096: the threaded loop runs with 2 threads
+  std::mt19937 rng(11);
+  std::vector<std::uint32_t> sorted_keys(np), random_keys(np);
+  for (std::size_t i = 0; i < np; ++i) sorted_keys[i] = std::uint32_t(i * 256 / np);  // ascending: index stays identity
+  for (auto& k : random_keys) k = std::uint32_t(rng() % 256);
+  std::vector<long long> ascending(np), shuffled(np), one_swap(np);
+  for (std::size_t i = 0; i < np; ++i) ascending[i] = shuffled[i] = one_swap[i] = 10 + 3 * (long long)i;
+  std::shuffle(shuffled.begin(), shuffled.end(), rng);
+  std::swap(one_swap[np / 2], one_swap[np / 2 + 1]);  // one block out of order, the rest ascending
+  for (int th : {1, 2}) {
+    check_sort_blocks(sorted_keys, ascending, th);   // identity, all ascending: nothing moves
+    check_sort_blocks(sorted_keys, one_swap, th);    // identity, one block to sort
+    check_sort_blocks(sorted_keys, shuffled, th);    // identity, every block to sort
+    check_sort_blocks(random_keys, ascending, th);   // displaced, blocks ascending
+    check_sort_blocks(random_keys, shuffled, th);    // displaced, blocks to sort
   }
 }
 
