@@ -184,8 +184,13 @@ TEST(MpiMpmIceMigration, CrackHistoryLookupGivesTheOneRankCellMaxima) {
   double sum = 0;
   for (double n : per_rank) sum += n;
   EXPECT_EQ(sum, double(whole_cells)) << "every cell with particles on exactly one rank";
-  if (world_ranks().size > 1)
-    for (double n : per_rank) EXPECT_GT(n, 0) << "the block straddles the rank cut";
+  // The block straddles a rank cut: at least two ranks hold cells with
+  // particles (on 2 ranks both; on 4 ranks the block need not reach every rank).
+  if (world_ranks().size > 1) {
+    int ranks_with_cells = 0;
+    for (double n : per_rank) ranks_with_cells += n > 0;
+    EXPECT_GE(ranks_with_cells, 2) << "the block straddles the rank cut";
+  }
   if (world_ranks().is_root()) {
     std::printf("[ mpi-mpmice-migration ] crack-history lookup at t = %.4g: %d cells with particles, per rank:",
                 t, whole_cells);
