@@ -29,19 +29,25 @@
 namespace tephra::test {
 namespace {
 
+// The quarter ring deck with cpdi, 2 particles per cell direction, to t = 0.005 s on `cells` cells per side.
+MmsRunOptions ring_options(int cells) {
+  MmsRunOptions o;
+  o.deck = source_dir() + "/inputs/mpm/expanding_ring_mms.ups";
+  o.planar = true;
+  o.interpolator = "cpdi";
+  o.cells = cells;
+  o.end_time = 0.005;
+  o.particles_per_cell_dir = 2;
+  return o;
+}
+
 TEST(MpmMmsConvergence, ExpandingRingCpdi) {
   const int saved = thread_count();
   set_thread_count(1);
   const int cells[3] = {16, 32, 64};
   double e[3];
   for (int k = 0; k < 3; ++k) {
-    MmsRunOptions o;
-    o.deck = source_dir() + "/inputs/mpm/expanding_ring_mms.ups";
-    o.planar = true;
-    o.interpolator = "cpdi";
-    o.cells = cells[k];
-    o.end_time = 0.005;
-    o.particles_per_cell_dir = 2;
+    const MmsRunOptions o = ring_options(cells[k]);
     const MmsRunResult r = run_axis_aligned(o);
     e[k] = r.error;
     std::printf("ring cpdi %2d cells: L2 error %.4e (%ld particles, %d steps, %.2f s)\n", cells[k], r.error,
@@ -87,13 +93,7 @@ TEST(MpmMmsConvergence, ExpandingRingConformingSeedingRemovesTheFaceError) {
   MmsRunResult last;
   for (int k = 0; k < 2; ++k)
     for (bool conform : {false, true}) {
-      MmsRunOptions o;
-      o.deck = source_dir() + "/inputs/mpm/expanding_ring_mms.ups";
-      o.planar = true;
-      o.interpolator = "cpdi";
-      o.cells = cells[k];
-      o.end_time = 0.005;
-      o.particles_per_cell_dir = 2;
+      MmsRunOptions o = ring_options(cells[k]);
       o.ring_inner = 0.4, o.ring_outer = 0.6;
       o.conforming_ring = conform;
       const MmsRunResult r = run_axis_aligned(o);

@@ -23,41 +23,24 @@
 #include "core/grid/Loop.h"
 #include "ice/RadialWeights.h"
 #include "mpmice/MpmIceComponent.h"
+#include "tests/support/CoupledRuns.h"
 #include "tests/support/IceRuns.h"
 #include "tests/support/TestPaths.h"
 
 namespace tephra {
 namespace {
 
-struct CoupledRun {
-  std::unique_ptr<Deck> deck;
-  std::unique_ptr<MpmIceComponent> c;
-  double time = 0;
-  int steps = 0;
-};
+using test::CoupledRun;
 
 CoupledRun make_run(const std::string& velocity = "") {
-  CoupledRun r;
-  r.deck = load_deck(test::source_dir() + "/inputs/mpmice/quiescent_block_axisym.ups");
-  if (!velocity.empty())
-    test::deck_node(r.deck->root, {"MaterialProperties", "MPM", "material", "geom_object", "velocity"}).text = velocity;
-  r.deck->root.finalize_parents();
-  r.c = make_mpmice_component(*r.deck);
-  r.c->initialize();
-  return r;
+  return test::make_coupled_run(test::source_dir() + "/inputs/mpmice/quiescent_block_axisym.ups", [&](DeckNode& root) {
+    if (!velocity.empty())
+      test::deck_node(root, {"MaterialProperties", "MPM", "material", "geom_object", "velocity"}).text = velocity;
+  });
 }
 
-void run_to(CoupledRun& r, int max_steps) {
-  const DeckNode& time = r.deck->root.require_child("Time");
-  const double delt_init = time.get_double("delt_init", 0.0);
-  const double mult = time.get_double("timestep_multiplier", 1.0);
-  while (r.steps < max_steps) {
-    const double dt = (r.steps == 0 && delt_init > 0) ? delt_init : mult * r.c->stable_timestep();
-    ++r.steps;
-    r.c->advance(r.time, dt, r.steps);
-    r.time += dt;
-  }
-}
+// The deck's time rule for max_steps steps in all (maxTime 1 s is never reached).
+void run_to(CoupledRun& r, int max_steps) { test::run_to(r, 1.0, max_steps); }
 
 // sum over the interior cells of rho_CC of material m times r_c dx dy (per
 // radian), leaving out cells below rho_min (the solid's trace tiny_rho rho0

@@ -24,43 +24,17 @@
 #include "core/deck/DeckLoader.h"
 #include "core/grid/Loop.h"
 #include "mpmice/MpmIceComponent.h"
+#include "tests/support/CoupledRuns.h"
 #include "tests/support/IceRuns.h"
 #include "tests/support/TestPaths.h"
 
 namespace tephra {
 namespace {
 
-struct CoupledRun {
-  std::unique_ptr<Deck> deck;
-  std::unique_ptr<MpmIceComponent> c;
-  double time = 0;
-  int steps = 0;
-};
+using test::CoupledRun;
+using test::run_to;
 
-CoupledRun make_run(const std::string& path) {
-  CoupledRun r;
-  r.deck = load_deck(path);
-  r.deck->root.finalize_parents();
-  r.c = make_mpmice_component(*r.deck);
-  r.c->initialize();
-  return r;
-}
-
-// The deck's time rule: delt_init first, then timestep_multiplier * stable
-// step, cut to land on maxTime.
-void run_to(CoupledRun& r, double end_time, int max_steps) {
-  const DeckNode& time = r.deck->root.require_child("Time");
-  const double delt_init = time.get_double("delt_init", 0.0);
-  const double mult = time.get_double("timestep_multiplier", 1.0);
-  const double delt_max = time.get_double("delt_max", 1e300);
-  while (r.time < end_time * (1 - 1e-14) && r.steps < max_steps) {
-    double dt = (r.steps == 0 && delt_init > 0) ? delt_init : mult * r.c->stable_timestep();
-    dt = std::min({dt, delt_max, end_time - r.time});
-    ++r.steps;
-    r.c->advance(r.time, dt, r.steps);
-    r.time += dt;
-  }
-}
+CoupledRun make_run(const std::string& path) { return test::make_coupled_run(path); }
 
 // max over cells (with extra cells) of |p - p0|/p0 and of |u - u0| over all materials.
 void cell_deviation(const MpmIceComponent& c, const Vec3& u0, double p0, double& dp, double& du,
