@@ -21,6 +21,7 @@
 #include <cstddef>
 #include <limits>
 
+#include "mpm/BandTag.h"
 #include "mpm/PatchBand.h"
 #include "mpm/shape/ScatterOrder.h"
 #include "mpm/shape/Interpolator.h"
@@ -42,6 +43,23 @@ void for_each_coupling_particle(const Stencils& st, std::size_t np, const PatchB
 // The patch tag of a particle at x (PatchBand::tag; -1: an interior particle
 // or no band): its terms at band nodes go to the partials of its patch.
 inline int coupling_tag(const PatchBand* band, const Vec3& x) { return band ? band->tag(x) : -1; }
+
+// The band of a scatter that writes only the nodes of each particle's own
+// stencil (T_g, the pressure force, the burn's unfolded node masses), with
+// the node-box answers of st's per-axis size prepared (serial code).
+inline PatchBand* stencil_coupling_band(PatchBand* band, const Stencils& st) {
+  if (band) band->boxes(st.axis_nodes);
+  return band;
+}
+
+// The tag of particle i for such a scatter: MPM's band_tag (mpm/BandTag.h:
+// -1 without tag()'s divisions when its stencil's node box holds no band
+// node; it then writes every node directly on either path, the same bits).
+// Not for the burn's cell shares, which go to a node below the stencil.
+template <class View>
+int stencil_coupling_tag(const PatchBand* band, const View& view, std::size_t i, const Vec3& x) {
+  return band ? band_tag(*band, view, i, x) : -1;
+}
 
 // Where a term of a particle with tag P at node gi goes: column `col` of the
 // partial (band node of gi, P) when gi is a band node, else `direct` (the

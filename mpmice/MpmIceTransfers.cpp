@@ -59,10 +59,10 @@ void MpmIceComponent::solid_state_to_cells() {
     std::vector<double>& mT = node_mT_;  // sum m_p T_p S_gp (buffer kept across steps)
     mT.assign(ng.count(), 0.0);
     // In patch order at the band nodes (mpmice/BandScatter.h): the same bits on any rank count.
-    PatchBand* band = mpm_->coupling_band(1);
+    PatchBand* band = stencil_coupling_band(mpm_->coupling_band(1), st);
     visit_stencils(st, [&](const auto& view) {
       for_each_coupling_particle(st, p.size(), band, [&](std::size_t i) {
-        const int P = coupling_tag(band, p.x[i]);
+        const int P = stencil_coupling_tag(band, view, i, p.x[i]);
         view.weights(i, [&](std::size_t gi, double w) { *band_target(band, P, gi, 0, &mT[gi]) += p.mass[i] * p.temperature[i] * w; });
       });
     });
@@ -224,14 +224,14 @@ void MpmIceComponent::add_internal_forces() {
     const std::vector<double>& pp = particle_pressure_[s];
     std::vector<Vec3> pressure_force(mm.grid.count(), Vec3::Zero());
     // In patch order at the band nodes (mpmice/BandScatter.h): the same bits on any rank count.
-    PatchBand* band = mpm_->coupling_band(1);
+    PatchBand* band = stencil_coupling_band(mpm_->coupling_band(1), st);
     // Axisymmetric: grad = (dS/dr, dS/dz, T = hoop factor) (mpm/Axisymmetric.h); the
     // stress p_p I gives f_r = -V_p p_p (dS/dr + T) (its sigma_thth hoop term), f_z = -V_p p_p dS/dz.
     const bool axi = mpm_->setup().flags.axisymmetric;
     visit_stencils(st, [&](const auto& view) {
       for_each_coupling_particle(st, mm.particles.size(), band, [&](std::size_t i) {
         const double vp = mm.particles.volume[i] * pp[i];
-        const int P = coupling_tag(band, mm.particles.x[i]);
+        const int P = stencil_coupling_tag(band, view, i, mm.particles.x[i]);
         if (axi)
           view.entries(i, [&](std::size_t gi, double, const Vec3& grad) {
             Eigen::Map<Vec3>(band_target(band, P, gi, 0, pressure_force[gi].data())) -=

@@ -147,9 +147,10 @@ void MpmIceComponent::burn_particles(std::size_t s, const CellScalars& dm, Burne
   PatchBand* band = mpm_->coupling_band(1);
   // M'_c = sum_p m_p W_c(x_p), from the unfolded node sums m'_n = sum_p m_p S_np.
   std::vector<double> m_unfolded(ng.count(), 0.0);
+  stencil_coupling_band(band, mm.stencils);
   visit_stencils(mm.stencils, [&](const auto& view) {
     for_each_coupling_particle(mm.stencils, p.size(), band, [&](std::size_t i) {
-      const int P = coupling_tag(band, p.x[i]);
+      const int P = stencil_coupling_tag(band, view, i, p.x[i]);
       view.weights(i, [&](std::size_t gi, double S) { *band_target(band, P, gi, 0, &m_unfolded[gi]) += p.mass[i] * S; });
     });
   });
