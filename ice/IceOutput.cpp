@@ -2,6 +2,7 @@
 // restart state.
 #include <string>
 
+#include "core/parallel/OutputGather.h"
 #include "ice/IceComponent.h"
 
 namespace tephra {
@@ -31,6 +32,15 @@ std::vector<double> pack(const A& a, const IndexRange& r, int comps) {
   return out;
 }
 
+// Inside TimeLoop's OutputToRoot scope (core/parallel/OutputGather.h) a
+// distributed layout's gathers land on rank 0 only: the other ranks hand back
+// empty arrays (TimeLoop writes nothing there).
+bool receives_gather(const PatchLayout& layout) { return !layout.distributed || output_gather_lands_here(); }
+FieldArray empty(FieldArray f) {
+  f.values.clear();
+  return f;
+}
+
 // The cells of the whole level with the extra cells, i fastest (OutputFrame.h).
 // Each patch's cells_with_extra() block comes from the process that holds it
 // (layout.gather_blocks) and is written in level patch order, so every rank
@@ -51,6 +61,7 @@ FieldArray gather(const PatchLayout& layout, const PatchFields<CellField<T>>& f,
   for (std::size_t pi = 0; pi < f.size(); ++pi)
     own.push_back(pack(f[pi], g.patches[static_cast<std::size_t>(f.patch_index(pi))].cells_with_extra(), nc));
   const std::vector<std::vector<double>> blocks = layout.gather_blocks(own);
+  if (!receives_gather(layout)) return empty(out);
   for (std::size_t p = 0; p < g.patches.size(); ++p) {
     const IndexRange r = g.patches[p].cells_with_extra();
     const double* v = blocks[p].data();
@@ -79,6 +90,7 @@ FieldArray gather_faces(const PatchLayout& layout, const FaceScalars& f, int d, 
   for (std::size_t pi = 0; pi < f.x.size(); ++pi)
     own.push_back(pack(f.at(d, pi), faces(g.patches[static_cast<std::size_t>(f.x.patch_index(pi))]), 1));
   const std::vector<std::vector<double>> blocks = layout.gather_blocks(own);
+  if (!receives_gather(layout)) return empty(out);
   for (std::size_t p = 0; p < g.patches.size(); ++p) {
     const IndexRange r = faces(g.patches[p]);
     const double* v = blocks[p].data();

@@ -8,6 +8,7 @@
 #include <tuple>
 #include <stdexcept>
 
+#include "core/parallel/OutputGather.h"
 #include "core/parallel/Ranks.h"
 
 namespace tephra {
@@ -117,14 +118,16 @@ void sort_by_id(ParticleBlock& b) {
 
 // On MPI ranks: every rank's particles of the block, concatenated in rank
 // order (sort_by_id then puts them in id order, as one process writes them).
+// Inside TimeLoop's OutputToRoot scope on rank 0 only (core/parallel/OutputGather.h):
+// the block is empty on the other ranks.
 void gather_block(ParticleBlock& b) {
   std::vector<double> x = flatten(b.position), id(b.id.begin(), b.id.end());  // ids < 2^53: exact
-  x = all_gather(x);
-  id = all_gather(id);
+  x = gather_output(x);
+  id = gather_output(id);
   b.position.resize(x.size() / 3);
   for (std::size_t i = 0; i < b.position.size(); ++i) take(x.data() + 3 * i, b.position[i]);
   b.id.assign(id.begin(), id.end());
-  for (FieldArray& f : b.fields) f.values = all_gather(f.values);
+  for (FieldArray& f : b.fields) f.values = gather_output(f.values);
 }
 
 std::string prefix(const MpmMaterial& m) { return "mpm.m" + std::to_string(m.index) + "."; }
@@ -337,10 +340,13 @@ std::map<std::string, std::vector<double>> MpmComponent::reductions(const std::s
 
 // On MPI ranks: the particles of every rank in ascending id (a checkpoint
 // that any rank count can read) and whole-grid node arrays (mpm/RankNodeSums.h).
+// Inside TimeLoop's OutputToRoot scope the gathers land on rank 0 only: the
+// other ranks make the same collective calls and are left with empty
+// columns (their archive is not written).
 void gather_for_checkpoint(const RankNodeSums& sums, const std::vector<HistoryVariable>& hist, Particles& p,
                            NodeGrid& g) {
   std::vector<double> ids(p.id.begin(), p.id.end());
-  ids = all_gather(ids);
+  ids = gather_output(ids);
   std::vector<std::size_t> order(ids.size());
   for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
   std::sort(order.begin(), order.end(), [&](std::size_t x, std::size_t y) { return ids[x] < ids[y]; });
@@ -350,16 +356,20 @@ void gather_for_checkpoint(const RankNodeSums& sums, const std::vector<HistoryVa
     if (name[0] == 'g') {
       if (col.empty()) return;
       const std::vector<double> w = sums.whole(flatten(col).data(), k);
+      if (w.size() != col.size() * std::size_t(k)) {  // not the receiving rank
+        col.clear();
+        return;
+      }
       for (std::size_t i = 0; i < col.size(); ++i) take(w.data() + k * i, col[i]);
       return;
     }
-    const std::vector<double> flat = all_gather(flatten(col));
+    const std::vector<double> flat = gather_output(flatten(col));
     col.resize(order.size());
     for (std::size_t j = 0; j < order.size(); ++j) take(flat.data() + k * order[j], col[j]);
   });
   for (std::size_t h = 0; h < hist.size(); ++h) {
     const std::size_t c = std::size_t(hist[h].components);
-    const std::vector<double> flat = all_gather(p.history[h]);
+    const std::vector<double> flat = gather_output(p.history[h]);
     p.history[h].resize(order.size() * c);
     for (std::size_t j = 0; j < order.size(); ++j)
       std::copy(flat.begin() + long(order[j] * c), flat.begin() + long((order[j] + 1) * c), p.history[h].begin() + long(j * c));

@@ -2,6 +2,7 @@
 
 #include <stdexcept>
 
+#include "core/parallel/OutputGather.h"
 #include "core/parallel/Ranks.h"
 
 namespace tephra {
@@ -122,7 +123,10 @@ std::vector<double> RankNodeSums::whole(const double* data, int width) const {
     for (int j = mine.lo[1]; j < mine.hi[1]; ++j)
       for (int i = mine.lo[0]; i < mine.hi[0]; ++i)
         for (std::size_t c = 0; c < w; ++c) local.push_back(data[node_index(i, j, k) * w + c]);
-  const std::vector<double> all = all_gather(local);
+  // gather_output: to every rank, or to rank 0 alone inside TimeLoop's
+  // OutputToRoot scope (the other ranks then return an empty array).
+  const std::vector<double> all = gather_output(local);
+  if (!output_gather_lands_here()) return {};
   std::vector<std::size_t> start(std::size_t(ranks) + 1, 0);
   for (int s = 0; s < ranks; ++s) start[std::size_t(s) + 1] = start[std::size_t(s)] + boxes_[std::size_t(s)].count() * w;
   if (all.size() != start.back()) throw std::logic_error("RankNodeSums::whole: gathered size");

@@ -74,7 +74,9 @@ class RankNodeSums {
 
   // A whole-grid copy of `data` (width doubles per node) on every rank: each
   // node from the lowest rank whose box holds it, 0 where no box does (a
-  // collective; for output and the boundary-force sums).
+  // collective; for output and the boundary-force sums). Inside an
+  // OutputToRoot scope (core/parallel/OutputGather.h) rank 0 alone receives:
+  // the other ranks get an empty vector.
   std::vector<double> whole(const double* data, int width) const;
 
  private:

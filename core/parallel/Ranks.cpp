@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "core/base/Mpi.h"
+#include "core/parallel/OutputGather.h"
 
 namespace tephra {
 
@@ -116,8 +117,10 @@ std::vector<std::vector<double>> gather_patch_blocks(const std::vector<int>& own
     sizes.push_back(static_cast<double>(own_blocks[n].size()));
     values.insert(values.end(), own_blocks[n].begin(), own_blocks[n].end());
   }
-  const std::vector<double> all_sizes = all_gather(sizes);
-  const std::vector<double> all_values = all_gather(values);
+  // Inside an OutputToRoot scope (core/parallel/OutputGather.h) only rank 0
+  // receives: the other ranks return empty blocks.
+  const std::vector<double> all_sizes = gather_output(sizes);
+  const std::vector<double> all_values = gather_output(values);
   std::size_t pos = 0;
   for (std::size_t s = 0; s + 1 < all_sizes.size(); s += 2) {
     const auto p = static_cast<std::size_t>(all_sizes[s]);

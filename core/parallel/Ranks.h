@@ -53,6 +53,8 @@ bool any_rank(bool flag);
 // has one block per patch, result[p] from the rank that owns patch p
 // (`owner[p]`, the same vector on every rank). One process: the blocks
 // themselves. Used to write rank-local fields as the one-rank run does.
+// Inside an OutputToRoot scope (core/parallel/OutputGather.h) only rank 0
+// receives the blocks; every block is empty on the other ranks.
 std::vector<std::vector<double>> gather_patch_blocks(const std::vector<int>& owner,
                                                      const std::vector<int>& own_patches,
                                                      const std::vector<std::vector<double>>& own_blocks);

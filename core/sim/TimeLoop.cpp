@@ -11,6 +11,7 @@
 #include "core/base/Log.h"
 #include "core/base/PhaseTimers.h"
 #include "core/io/OutputWriter.h"
+#include "core/parallel/OutputGather.h"
 #include "core/parallel/Ranks.h"
 
 namespace tephra {
@@ -93,14 +94,19 @@ bool TimeLoop::checkpoint_due() const {
 void TimeLoop::write_output() {
   PhaseTimers::Scope scope(phase_timers(), "output");
   std::set<std::string> labels = archiver_.labels();
-  // Every rank computes the reductions and the frame (collectives under
-  // mpirun: the component gathers its patches); rank 0 alone writes.
+  // Every rank computes the reductions (collectives under mpirun) and takes
+  // part in the frame's gathers; rank 0 alone writes. Since session 23 the
+  // gathers deliver to rank 0 only (OutputToRoot, core/parallel/OutputGather.h):
+  // the frame the other ranks assemble is empty and not used.
   auto reductions = component_.reductions(labels);
   if (writer_ && !reductions.empty()) writer_->append_reductions(state_.time, reductions);
   OutputFrame frame;
   frame.step = static_cast<int>(state_.step);
   frame.time = state_.time;
-  component_.fill_output(labels, frame);
+  {
+    OutputToRoot to_root;
+    component_.fill_output(labels, frame);
+  }
   if (writer_) writer_->write_frame(frame);
   last_output_step_ = state_.step;
   if (archiver_.output_interval) {
@@ -117,7 +123,10 @@ void TimeLoop::write_checkpoint() {
       ++state_.checkpoints_done;
   }
   StateArchive archive;
-  component_.save_state(archive);
+  {
+    OutputToRoot to_root;  // the archive is whole on rank 0 only, which writes it
+    component_.save_state(archive);
+  }
   archive.put_scalar("timeloop.time", state_.time);
   archive.put_int("timeloop.step", state_.step);
   archive.put_scalar("timeloop.previous_dt", state_.previous_dt);
@@ -199,7 +208,10 @@ void TimeLoop::step_until_end() {
         OutputFrame frame;
         frame.step = static_cast<int>(state_.step + 1);
         frame.time = state_.time;
-        component_.fill_output(archiver_.labels(), frame);
+        {
+          OutputToRoot to_root;
+          component_.fill_output(archiver_.labels(), frame);
+        }
         if (writer_) writer_->write_frame(frame);
         log::warning("wrote the last state to " + options_.output_dir + " (frame " +
                      std::to_string(frame.step) + ")");

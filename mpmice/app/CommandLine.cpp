@@ -15,6 +15,7 @@
 #include "core/deck/Validate.h"
 #include "core/grid/Loop.h"
 #include "core/io/Extract.h"
+#include "core/parallel/OutputGather.h"
 #include "core/parallel/Ranks.h"
 #include "core/sim/RunParameters.h"
 #include "core/sim/TimeLoop.h"
@@ -114,7 +115,26 @@ PreparedRun prepare(const std::string& deck_path) {
   return r;
 }
 
+// Under mpirun: what each rank sent and received in the gathers of the
+// frames and checkpoints (core/parallel/OutputGather.h). Every rank takes
+// part (one small all-gather); rank 0 prints.
+void print_output_gather_traffic() {
+  const Ranks r = world_ranks();
+  if (r.size == 1) return;
+  const OutputGatherTraffic t = output_gather_traffic();
+  const std::vector<double> all = all_gather({double(t.calls), double(t.doubles_sent), double(t.doubles_received)});
+  if (log::quiet()) return;
+  std::cout << "\noutput gathers (frames and checkpoints), per rank: calls, MB sent, MB received\n";
+  for (int s = 0; s < r.size; ++s) {
+    char line[128];
+    std::snprintf(line, sizeof line, "  rank %d: %.0f, %.3f, %.3f\n", s, all[3 * s], all[3 * s + 1] * 8e-6,
+                  all[3 * s + 2] * 8e-6);
+    std::cout << line;
+  }
+}
+
 void print_phase_table(double wall) {
+  print_output_gather_traffic();
   if (log::quiet()) return;
   std::cout << "\n" << phase_timers().table(wall);
 }

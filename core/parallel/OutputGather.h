@@ -1,0 +1,57 @@
+#pragma once
+// Where the output gathers deliver (issue 7 item 4, session 23).
+//
+// Under mpirun rank 0 alone writes the frames and checkpoints (Debian's HDF5
+// is serial: one writer, the same files as a 1-rank run). The components
+// assemble the whole-level arrays of a frame or of the restart state by
+// gathering their patches (ICE: PatchLayout::gather_blocks; MPM: the
+// particles and RankNodeSums::whole). Outside an OutputToRoot scope these
+// gathers deliver to every rank (MPI_Allgatherv: what the tests that compare
+// a distributed component with the whole level on every rank need). Inside
+// the scope, which TimeLoop opens around fill_output and save_state, they
+// deliver to rank 0 only (MPI_Gatherv): the other ranks send their part and
+// receive nothing, so the frame or archive they assemble is empty
+// (`output_gather_lands_here()` is false there) and must not be used.
+//
+// Traffic per process (doubles of field data, the counts of the
+// variable-size gathers not included):
+//   to every rank: sent = n_local (size - 1), received = n_total - n_local
+//   to rank 0:     rank 0 receives n_total - n_0, rank r > 0 sends n_r.
+#include <vector>
+
+namespace tephra {
+
+class OutputToRoot {
+ public:
+  OutputToRoot();
+  ~OutputToRoot();
+  OutputToRoot(const OutputToRoot&) = delete;
+  OutputToRoot& operator=(const OutputToRoot&) = delete;
+
+ private:
+  bool previous_;
+};
+
+// True inside an OutputToRoot scope.
+bool output_gathers_to_root();
+
+// True when this process receives the output gathers: outside a scope every
+// rank, inside it rank 0 only.
+bool output_gather_lands_here();
+
+// Every rank's `local` concatenated in rank order, on every rank (outside a
+// scope: all_gather) or on rank 0 only (inside: the other ranks get an empty
+// vector). One rank: `local`.
+std::vector<double> gather_output(const std::vector<double>& local);
+
+// Doubles this process sent to / received from other ranks in gather_output
+// since the start (or the last reset).
+struct OutputGatherTraffic {
+  long long calls = 0;
+  long long doubles_sent = 0;
+  long long doubles_received = 0;
+};
+OutputGatherTraffic output_gather_traffic();
+void reset_output_gather_traffic();
+
+}  // namespace tephra
