@@ -24,6 +24,7 @@ std::vector<double> gather_output(const std::vector<double>& local) {
   if (r.size == 1) return local;
   ++g_traffic.calls;
   const long long n = static_cast<long long>(local.size());
+  g_traffic.doubles_own += n;
   if (!g_to_root) {
     std::vector<double> all = all_gather(local);
     g_traffic.doubles_sent += n * (r.size - 1);

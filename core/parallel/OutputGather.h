@@ -44,10 +44,12 @@ bool output_gather_lands_here();
 // vector). One rank: `local`.
 std::vector<double> gather_output(const std::vector<double>& local);
 
-// Doubles this process sent to / received from other ranks in gather_output
-// since the start (or the last reset).
+// Doubles this process contributed, sent to and received from other ranks in
+// gather_output since the start (or the last reset). With the contributions
+// n_r of every rank the traffic of either mode follows from the formulas above.
 struct OutputGatherTraffic {
   long long calls = 0;
+  long long doubles_own = 0;       // this rank's contributions (n_local summed over the calls)
   long long doubles_sent = 0;
   long long doubles_received = 0;
 };

@@ -122,13 +122,14 @@ void print_output_gather_traffic() {
   const Ranks r = world_ranks();
   if (r.size == 1) return;
   const OutputGatherTraffic t = output_gather_traffic();
-  const std::vector<double> all = all_gather({double(t.calls), double(t.doubles_sent), double(t.doubles_received)});
+  const std::vector<double> all =
+      all_gather({double(t.calls), double(t.doubles_own), double(t.doubles_sent), double(t.doubles_received)});
   if (log::quiet()) return;
-  std::cout << "\noutput gathers (frames and checkpoints), per rank: calls, MB sent, MB received\n";
+  std::cout << "\noutput gathers (frames and checkpoints), per rank: calls, MB own, MB sent, MB received\n";
   for (int s = 0; s < r.size; ++s) {
-    char line[128];
-    std::snprintf(line, sizeof line, "  rank %d: %.0f, %.3f, %.3f\n", s, all[3 * s], all[3 * s + 1] * 8e-6,
-                  all[3 * s + 2] * 8e-6);
+    char line[160];
+    std::snprintf(line, sizeof line, "  rank %d: %.0f, %.3f, %.3f, %.3f\n", s, all[4 * s], all[4 * s + 1] * 8e-6,
+                  all[4 * s + 2] * 8e-6, all[4 * s + 3] * 8e-6);
     std::cout << line;
   }
 }

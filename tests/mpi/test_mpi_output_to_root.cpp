@@ -55,6 +55,7 @@ TEST(MpiOutputToRoot, GatherOutputDeliversToRankZeroOnlyInsideTheScope) {
   EXPECT_EQ(gather_output(my_values(r.rank)), expected);  // outside: every rank
   OutputGatherTraffic t = output_gather_traffic();
   if (r.size > 1) {
+    EXPECT_EQ(t.doubles_own, mine);
     EXPECT_EQ(t.doubles_received, total - mine);
     EXPECT_EQ(t.doubles_sent, mine * (r.size - 1));
   }
@@ -72,6 +73,7 @@ TEST(MpiOutputToRoot, GatherOutputDeliversToRankZeroOnlyInsideTheScope) {
   t = output_gather_traffic();
   if (r.size > 1) {
     EXPECT_EQ(t.calls, 1);
+    EXPECT_EQ(t.doubles_own, mine);
     EXPECT_EQ(t.doubles_received, r.is_root() ? total - mine : 0);
     EXPECT_EQ(t.doubles_sent, r.is_root() ? 0 : mine);
   }
