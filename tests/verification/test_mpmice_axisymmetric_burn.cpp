@@ -27,6 +27,8 @@
 #include <stdexcept>
 #include <vector>
 
+#include "core/base/Errors.h"
+#include "core/deck/DeckLoader.h"
 #include "core/grid/Loop.h"
 #include "mpmice/MpmIceComponent.h"
 #include "mpmice/SteadyBurn.h"
@@ -245,6 +247,29 @@ TEST(MpmIceAxisymmetricBurn, SteadyBurnStepIsTheWsbRateTimesRL) {
   EXPECT_NEAR(b.mass_burned_last_step(), expected, 1e-12 * expected);
   EXPECT_NEAR(b.mass_burned_last_step(), closed, 1e-6 * closed);
   EXPECT_NEAR(mass_lost(m0, *r.c), b.mass_burned_last_step(), roundoff + 1e-12 * expected);
+}
+
+// A burn model without the per-radian conversion (DDT0: its crack term is a
+// mass per step) still stops the deck reader: MissingFeature (exit 3) naming it.
+TEST(MpmIceAxisymmetricBurn, Ddt0WithAxisymmetricIsAMissingFeatureNamingIt) {
+  std::unique_ptr<Deck> deck = load_deck(test::source_dir() + "/inputs/mpmice/burning_cylinder_axisym.ups");
+  DeckNode& m = test::deck_node(deck->root, {"Models", "Model"});
+  for (auto& [k, v] : m.attributes)
+    if (k == "type") v = "DDT0";
+  m.children = {leaf("fromMaterial", "steel"),        leaf("toMaterial", "air"),   leaf("ThresholdPressureJWL", "5.3e9"),
+                leaf("G", "2.33e-6"),                 leaf("b", "1.2"),            leaf("E0", "5.448e6"),
+                leaf("Enthalpy", "0"),                leaf("BurnCoeff", "1"),      leaf("refPressure", "101325"),
+                leaf("ThresholdTemp", "299"),         leaf("ThresholdPressureSB", "500")};
+  deck->root.finalize_parents();
+  try {
+    make_mpmice_component(*deck);
+    ADD_FAILURE() << "DDT0 with <axisymmetric> was accepted";
+  } catch (const MissingFeature& e) {
+    const std::string what = e.what();
+    std::printf("[mpmice axisym burn] DDT0: %s\n", what.c_str());
+    EXPECT_NE(what.find("DDT0"), std::string::npos);
+    EXPECT_NE(what.find("axisymmetric"), std::string::npos);
+  }
 }
 
 }  // namespace
