@@ -72,6 +72,7 @@ class MpmIceComponent final : public Component, private MpmCoupling, private Sol
   bool particle_history_max(std::size_t s, const std::string& name, CellScalars& out) const override;
   void reactant_particles(std::size_t s, std::vector<BurnParticle>& out) const override;
   void exchange_cell_halo(CellScalars& f) override { ice_->exchange_halo(f); }
+  bool axisymmetric() const override { return ice_->setup().axisymmetric; }
   // MPI ranks: burned cell shares of other ranks' cells to their owners (ParticleBurn.cpp).
   // in_band: cells whose sums every rank holds whole already (mpmice/BandScatter.h): not sent.
   void send_burned_shares(const std::vector<int>& patch_of, const std::vector<char>& in_band, std::vector<double>& mass,
@@ -95,6 +96,10 @@ class MpmIceComponent final : public Component, private MpmCoupling, private Sol
   // projected to the cell above it in r (solid_state_to_cells; used by
   // cell_changes_to_nodes_and_particles, mpmice/NodeAverages.h).
   std::vector<std::vector<double>> node_share_above_;
+  // Axisymmetric with burn models: per MPM material, per node, the
+  // planar-equivalent node mass sum_p m_p (dz/r_p) S_gp of this step
+  // (solid_state_to_cells; corner_masses, mpmice/AxisymmetricBurn.h).
+  std::vector<std::vector<double>> node_planar_mass_;
   CellVectors change_du_;
   CellScalars change_dT_;
   // The step-redo snapshot's buffers, kept across steps (advance(); one

@@ -102,11 +102,25 @@ std::unique_ptr<MpmIceComponent> make_mpmice_component(const Deck& deck) {
   IceSetup s = read_ice_setup(deck, std::move(solids), mpmice_burn_model_factories());
   check_models_in_mpmice(root, s, ms);
   // Axisymmetric MPMICE (session 21): the transfers take per-radian masses
-  // (MpmIceTransfers.cpp, SolidVolumeFlux.cpp); the burn models' solid-gas
-  // mass conversion is not converted yet.
-  if (s.axisymmetric && !s.models.empty())
-    root.require_child("Models").missing_feature("<Models> with <axisymmetric> in MPMICE (the burn models' mass "
-                                                 "conversion is not axisymmetric yet)");
+  // (MpmIceTransfers.cpp, SolidVolumeFlux.cpp). Burn models (session 23,
+  // mpmice/AxisymmetricBurn.h): the surface-area and cell-mass laws run per
+  // radian; DDT0 (its crack term is a mass per step), DDT1 (convective area,
+  // induction, crack model) and MesoBurn (per-particle clocks) are not
+  // converted, and the ICE-only models are not verified with <axisymmetric>.
+  if (s.axisymmetric && !s.models.empty()) {
+    std::vector<const DeckNode*> model_nodes;
+    if (const DeckNode* models = root.child("Models")) model_nodes = models->children_named("Model");
+    const std::size_t offset = s.models.size() - model_nodes.size();
+    for (std::size_t i = 0; i < s.models.size(); ++i) {
+      const std::string t = s.models[i]->type();
+      if (t == "Simple_Burn" || t == "Steady_Burn" || t == "Unsteady_Burn" || t == "Test" || t == "SolidReactionModel")
+        continue;
+      const DeckNode& where = i >= offset ? *model_nodes[i - offset]
+                                          : root.require_child("CFD").require_child("ICE").require_child("ADD_HEAT");
+      where.missing_feature("<Model type=\"" + t + "\"> with <axisymmetric> in MPMICE (axisymmetric burn models: "
+                            "Simple_Burn, Steady_Burn, Unsteady_Burn, Test, SolidReactionModel)");
+    }
+  }
   // Verified for a solid at rest and a cylinder translating along the axis
   // (test_mpmice_axisymmetric: the air pressure at the planar slab's scale);
   // a radially moving solid only for mass conservation (docs/mpmice.md).

@@ -15,6 +15,7 @@
 #include "mpmice/CellProjection.h"
 #include "mpmice/MpmIceComponent.h"
 #include "mpmice/NodeAverages.h"
+#include "mpm/SymmetryFold.h"
 #include "mpm/shape/AxisStencils.h"
 
 namespace tephra {
@@ -101,6 +102,25 @@ void MpmIceComponent::solid_state_to_cells() {
       share.assign(ng.count(), 0.5);
       for (std::size_t gi = 0; gi < ng.count(); ++gi)
         if (ng.mass[gi] > 0.0) share[gi] = m_above[gi] / ng.mass[gi];
+      // The burn models' surface tests (SolidBurnSupport::corner_masses):
+      // the planar-equivalent node mass sum_p m_p (dz/r_p) S_gp, the node
+      // mass of the planar run with the same cross-section (m_p/r_p = rho
+      // A_p), folded as P2G folds m_g (mpmice/AxisymmetricBurn.h).
+      if (!is.models.empty()) {
+        if (node_planar_mass_.size() <= s) node_planar_mass_.resize(s + 1);
+        std::vector<double>& q = node_planar_mass_[s];
+        q.assign(ng.count(), 0.0);
+        const double dz = g.dx[2];
+        visit_stencils(st, [&](const auto& view) {
+          for (std::size_t i = 0; i < p.size(); ++i) {
+            if (!(p.x[i][0] > 0)) continue;  // on or across the axis: no planar section (MPM's r > 0 rule)
+            const double mq = p.mass[i] * dz / p.x[i][0];
+            view.weights(i, [&](std::size_t gi, double w) { q[gi] += mq * w; });
+          }
+        });
+        mpm_->sum_node_doubles(q);  // over the MPI ranks
+        fold_symmetry_scalar(mm.bcs, ng, q);
+      }
     }
     IceMaterialFields& f = fields[s];
     for (std::size_t pi = 0; pi < g.patches.size(); ++pi)

@@ -31,6 +31,7 @@
 #include <array>
 #include <cmath>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "core/grid/Loop.h"
@@ -48,9 +49,18 @@ void MpmIceComponent::corner_masses(std::size_t s, const IntVec3& c, double wm[8
   const NodeGrid& ng = mm.grid;
   const IntVec3 off = node_offset(ice_->grid(), ng);
   const std::array<bool, 6> symmetric = symmetry_faces(mm.bcs);
+  // Axisymmetric: the planar-equivalent node masses sum_p m_p (dz/r_p) S_np
+  // (solid_state_to_cells): the per-radian m_g grows with r_g inside a
+  // uniform solid, so its corner ratios would flag cells near the axis as
+  // surface cells and tilt the normals; the planar section has the
+  // Cartesian corner values of the same cross-section (mpmice/AxisymmetricBurn.h).
+  const bool axi = ice_->setup().axisymmetric;
+  if (axi && node_planar_mass_.size() <= s)
+    throw std::logic_error("MPMICE burn: no planar-equivalent node masses (axisymmetric) for solid " + std::to_string(s));
+  const std::vector<double>& m = axi ? node_planar_mass_[s] : ng.mass;
   for (int n = 0; n < 8; ++n) {
     const IntVec3 node = c + off + IntVec3(n & 1, (n >> 1) & 1, (n >> 2) & 1);
-    wm[n] = node_cell_weight(ng, symmetric, node) * ng.mass[ng.index(node)];
+    wm[n] = node_cell_weight(ng, symmetric, node) * m[ng.index(node)];
   }
 }
 
@@ -129,31 +139,53 @@ void MpmIceComponent::burn_particles(std::size_t s, const CellScalars& dm, Burne
       any = any || dm[pi](c) > 0;
     });
   if (!mpm_->layout().any(any)) return;  // every MPI rank takes the same branch (collectives below)
+  // Axisymmetric (x = r): along r a particle's share of node n goes to the
+  // node's cell on the particle's side (r_p >= r_n: the cell above), with
+  // weight 2 w_n (w_n on the axis plane), as the projection does
+  // (mpmice/CellProjection.h): W_c(x_p) = sum_{n in c, p on c's side} W_n S_np,
+  // so M'_c is the projected cell mass M_c (f_c <= 1 <=> dm_c <= the solid's cell mass).
+  const bool axi = ice_->setup().axisymmetric;
   // The interior cells that share node gi (up to 8), with the node's weight
-  // and the flat index of the cell's lower corner node (where a band keeps the cell's partials).
+  // (axisymmetric: W_n), the flat index of the cell's lower corner node
+  // (where a band keeps the cell's partials) and whether the cell lies above
+  // the node in x.
   auto for_node_cells = [&](std::size_t gi, auto&& fn) {
     const std::size_t nx = std::size_t(ng.n[0]), ny = std::size_t(ng.n[1]);
     const IntVec3 node(int(gi % nx), int((gi / nx) % ny), int(gi / (nx * ny)));
-    const double w = node_cell_weight(ng, symmetric, node);
+    bool on[3];
+    double w = node_cell_weight(ng, symmetric, node, on);
+    if (axi) w = axisymmetric_node_cell_weight(w, on[0], 1.0);
     for (int q = 0; q < 8; ++q) {
       const IntVec3 corner = node - IntVec3(q & 1, (q >> 1) & 1, (q >> 2) & 1);
       const IntVec3 c = corner - off;
       if ((c.array() < 0).any() || (c.array() >= nc.array()).any()) continue;
-      fn(flat(c), w, ng.index(corner));
+      fn(flat(c), w, ng.index(corner), (q & 1) == 0);
     }
   };
   // Node and cell sums in patch order at the band nodes (mpmice/BandScatter.h):
   // the same bits on any rank count.
   PatchBand* band = mpm_->coupling_band(1);
-  // M'_c = sum_p m_p W_c(x_p), from the unfolded node sums m'_n = sum_p m_p S_np.
-  std::vector<double> m_unfolded(ng.count(), 0.0);
+  if (axi && band) throw std::logic_error("MPMICE burn: axisymmetric runs have no coupling band");
+  const std::size_t node_nx = std::size_t(ng.n[0]);
+  // Axisymmetric: particle i lies above node gi in r (r_p >= r_g, CellProjection.h's rule).
+  auto above = [&](std::size_t i, std::size_t gi) { return p.x[i][0] >= ng.origin[0] + double(gi % node_nx) * ng.h[0]; };
+  // M'_c = sum_p m_p W_c(x_p), from the unfolded node sums m'_n = sum_p m_p S_np
+  // (axisymmetric: m'_n over the particles above the node, m_below over those below).
+  std::vector<double> m_unfolded(ng.count(), 0.0), m_below;
+  if (axi) m_below.assign(ng.count(), 0.0);
   stencil_coupling_band(band, mm.stencils);
   visit_stencils(mm.stencils, [&](const auto& view) {
     for_each_coupling_particle(mm.stencils, p.size(), band, [&](std::size_t i) {
       const int P = stencil_coupling_tag(band, view, i, p.x[i]);
-      view.weights(i, [&](std::size_t gi, double S) { *band_target(band, P, gi, 0, &m_unfolded[gi]) += p.mass[i] * S; });
+      view.weights(i, [&](std::size_t gi, double S) {
+        if (axi && !above(i, gi))
+          m_below[gi] += p.mass[i] * S;
+        else
+          *band_target(band, P, gi, 0, &m_unfolded[gi]) += p.mass[i] * S;
+      });
     });
   });
+  if (axi) mpm_->sum_node_doubles(m_below);
   // MPI ranks: the node sums of every rank's particles, at the nodes of the
   // rank's box (which holds its own cells' corners); no-ops in one process.
   if (band) {
@@ -163,8 +195,11 @@ void MpmIceComponent::burn_particles(std::size_t s, const CellScalars& dm, Burne
     mpm_->sum_node_doubles(m_unfolded);
   }
   std::vector<double> Mc(ncell, 0.0);
-  for (std::size_t gi = 0; gi < ng.count(); ++gi)
-    if (m_unfolded[gi] > 0) for_node_cells(gi, [&](std::size_t c, double w, std::size_t) { Mc[c] += w * m_unfolded[gi]; });
+  for (std::size_t gi = 0; gi < ng.count(); ++gi) {
+    const double mb = axi ? m_below[gi] : 0.0;
+    if (m_unfolded[gi] > 0 || mb > 0)
+      for_node_cells(gi, [&](std::size_t c, double w, std::size_t, bool up) { Mc[c] += w * (axi && !up ? mb : m_unfolded[gi]); });
+  }
   std::vector<double> f(ncell, 0.0);
   for (std::size_t c = 0; c < ncell; ++c)
     if (dmc[c] > 0 && Mc[c] > 0) f[c] = std::min(dmc[c] / Mc[c], 1.0);
@@ -178,10 +213,13 @@ void MpmIceComponent::burn_particles(std::size_t s, const CellScalars& dm, Burne
     const std::vector<double> all = all_gather(mine);
     for (std::size_t k = 0; k + 2 <= all.size(); k += 2) f[std::size_t(all[k])] = all[k + 1];
   }
-  // phi_n = w_n sum_{c ∋ n} f_c.
-  std::vector<double> phi(ng.count(), 0.0);
+  // phi_n = w_n sum_{c ∋ n} f_c (axisymmetric: phi over the cells above the
+  // node for the particles above it, phi_below over the cells below).
+  std::vector<double> phi(ng.count(), 0.0), phi_below;
+  if (axi) phi_below.assign(ng.count(), 0.0);
   for (std::size_t gi = 0; gi < ng.count(); ++gi)
-    if (m_unfolded[gi] > 0) for_node_cells(gi, [&](std::size_t c, double w, std::size_t) { phi[gi] += w * f[c]; });
+    if (m_unfolded[gi] > 0 || (axi && m_below[gi] > 0))
+      for_node_cells(gi, [&](std::size_t c, double w, std::size_t, bool up) { (axi && !up ? phi_below : phi)[gi] += w * f[c]; });
 
   // The particles: their loss, its cell shares, and the node sums of the loss.
   NodeGrid& d = burn_grid_;
@@ -198,8 +236,10 @@ void MpmIceComponent::burn_particles(std::size_t s, const CellScalars& dm, Burne
   // cell's share of mass (8), momentum (9-11) and energy (12).
   visit_stencils(mm.stencils, [&](const auto& view) {
     for_each_coupling_particle(mm.stencils, p.size(), band, [&](std::size_t i) {
+      // The particle's burn fraction through node gi (axisymmetric: its side's).
+      auto phi_of = [&](std::size_t gi) { return axi && !above(i, gi) ? phi_below[gi] : phi[gi]; };
       double a = 0;
-      view.weights(i, [&](std::size_t gi, double S) { a += S * phi[gi]; });
+      view.weights(i, [&](std::size_t gi, double S) { a += S * phi_of(gi); });
       if (!(a > 0)) return;
       const int P = coupling_tag(band, p.x[i]);
       const double m0 = p.mass[i];
@@ -209,9 +249,10 @@ void MpmIceComponent::burn_particles(std::size_t s, const CellScalars& dm, Burne
       const Vec3 v = p.v[i];
       const double e = cv * p.temperature[i];
       view.weights(i, [&](std::size_t gi, double S) {
-        if (!(phi[gi] > 0)) return;
-        for_node_cells(gi, [&](std::size_t c, double w, std::size_t corner) {
-          if (!(f[c] > 0)) return;
+        if (!(phi_of(gi) > 0)) return;
+        const bool p_above = !axi || above(i, gi);
+        for_node_cells(gi, [&](std::size_t c, double w, std::size_t corner, bool up) {
+          if (!(f[c] > 0) || (axi && up != p_above)) return;
           const double share = scale * S * w * f[c];
           *band_target(band, P, corner, 8, &cell_mass[c]) += share;
           Eigen::Map<Vec3>(band_target(band, P, corner, 9, cell_mom[c].data())) += share * v;
@@ -272,7 +313,7 @@ void MpmIceComponent::burn_particles(std::size_t s, const CellScalars& dm, Burne
   // them out of this step's node sums.
   for (std::size_t gi = 0; gi < d.count(); ++gi)
     if (d.mass[gi] > 0) d.velocity[gi] /= d.mass[gi];
-  fold_symmetry_particle_sums(mm.bcs, d);
+  fold_symmetry_particle_sums(mm.bcs, d, mpm_->setup().flags.axisymmetric ? 2 : 3);  // as P2G folds (not the hoop faces)
   for (std::size_t gi = 0; gi < ng.count(); ++gi) {
     if (!(d.mass[gi] > 0)) continue;
     const double m_old = ng.mass[gi];

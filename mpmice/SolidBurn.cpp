@@ -15,6 +15,7 @@
 
 #include "core/grid/Loop.h"
 #include "ice/IceSetup.h"
+#include "mpmice/AxisymmetricBurn.h"
 #include "mpmice/SimpleBurn.h"
 
 namespace tephra {
@@ -54,6 +55,8 @@ void SolidBurnModel::compute_sources(const IceModelInput& in, IceModelSources& o
   on_surface_.fill(0.0);
   burning_.fill(0.0);
   const IceMaterialFields& solid = in.mats[reactant_];
+  // Axisymmetric: per-radian masses, volumes and areas (mpmice/AxisymmetricBurn.h).
+  const bool axi = support_->axisymmetric();
   ppc_.fill(0.0);
   support_->particles_per_cell(reactant_, ppc_);
   for (std::size_t pi = 0; pi < g.patches.size(); ++pi)
@@ -65,10 +68,16 @@ void SolidBurnModel::compute_sources(const IceModelInput& in, IceModelSources& o
       cell.in = &in;
       cell.patch = pi;
       cell.c = c;
-      cell.solid_mass = solid.rho_CC[pi](c) * V;
+      const double r_c = axisymmetric_cell_radius(g.lower[0], dx[0], i);
+      cell.volume = axi ? r_c * dx[0] * dx[1] : V;
+      cell.solid_mass = solid.rho_CC[pi](c) * cell.volume;
       cell.particles = ppc_[pi](c);
       if (!select_cell(wm, cell)) return;
-      cell.area = cell.surface ? simple_burn_surface_area(simple_burn_surface_normal(wm, dx), dx) : 0.0;
+      if (cell.surface) {
+        const Vec3 n = simple_burn_surface_normal(wm, dx);
+        const double a = simple_burn_surface_area(n, dx);
+        cell.area = axi ? axisymmetric_burn_area(a, n, r_c, dx) : a;
+      }
       on_surface_[pi](c) = cell.area;
       dm_[pi](c) = std::clamp(burn_mass(cell), 0.0, cell.solid_mass);
     });
@@ -84,14 +93,17 @@ void SolidBurnModel::compute_sources(const IceModelInput& in, IceModelSources& o
       const Vec3 P = burned_.momentum[pi](c);
       const double E = burned_.energy[pi](c), dv = dm * solid.sp_vol_CC[pi](c);
       const double heat = dm * heat_of_reaction(pi, c);
-      out.mass[reactant_][pi](c) -= dm;
-      out.mass[product_][pi](c) += dm;
-      out.momentum[reactant_][pi](c) -= P;
-      out.momentum[product_][pi](c) += P;
-      out.energy[reactant_][pi](c) -= E;
-      out.energy[product_][pi](c) += E + heat;
-      out.sp_vol[reactant_][pi](c) -= dv;
-      out.sp_vol[product_][pi](c) += dv;
+      // ICE's contents: Cartesian; per radian (axisymmetric) x dz / r_c.
+      const double to_ice = axi ? axisymmetric_content_per_radian_mass(axisymmetric_cell_radius(g.lower[0], dx[0], i), dx[2])
+                           : 1.0;
+      out.mass[reactant_][pi](c) -= to_ice * dm;
+      out.mass[product_][pi](c) += to_ice * dm;
+      out.momentum[reactant_][pi](c) -= to_ice * P;
+      out.momentum[product_][pi](c) += to_ice * P;
+      out.energy[reactant_][pi](c) -= to_ice * E;
+      out.energy[product_][pi](c) += to_ice * (E + heat);
+      out.sp_vol[reactant_][pi](c) -= to_ice * dv;
+      out.sp_vol[product_][pi](c) += to_ice * dv;
       burning_[pi](c) = 1.0;
       total_burned_ += dm;
       total_momentum_ += P;

@@ -62,6 +62,10 @@ class SolidBurnSupport {
   // Fills the ghost cells of a model's cell field from the patches (and
   // ranks) that own them, for a rule that reads a neighbour's value.
   virtual void exchange_cell_halo(CellScalars& f) = 0;
+  // Axisymmetric MPMICE (x = r, per-radian particle masses): the models
+  // work per radian (mpmice/AxisymmetricBurn.h), and corner_masses gives
+  // the planar-equivalent node masses sum_p m_p (dz/r_p) S_np.
+  virtual bool axisymmetric() const = 0;
 };
 
 // The cell a burn law sees.
@@ -72,7 +76,8 @@ struct BurnCell {
   double area = 0;         // burning surface area in the cell [m^2] (SimpleBurn.h)
   double temperature = 0;  // the law's temperature (Simple_Burn: the hottest material above the threshold)
   double pressure = 0;     // the law's pressure (Simple_Burn: press_equil_CC)
-  double solid_mass = 0;   // the solid's cell mass rho_CC V
+  double volume = 0;       // the cell's volume in the model's mass units: V, or r_c dx dy per radian (axisymmetric)
+  double solid_mass = 0;   // the solid's cell mass rho_CC volume
   double particles = 0;    // the solid's particles in the cell
   bool surface = true;     // select_cell may clear it: the law needs no burning area (DDT1's detonation), area = 0
 };

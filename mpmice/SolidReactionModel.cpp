@@ -61,7 +61,7 @@ class SolidReactionMpmModel final : public SolidBurnModel {
  protected:
   double burn_mass(const BurnCell& c) override {
     const double Mr = c.solid_mass;
-    const double Mp = c.in->mats[product()].rho_CC[c.patch](c.c) * c.in->grid.cell_volume();
+    const double Mp = c.in->mats[product()].rho_CC[c.patch](c.c) * c.volume;  // per radian when axisymmetric
     const double F = Mp / (Mr + Mp);
     const double delF = solid_reaction_delF(k_, f_, c.temperature, F, c.in->dt);
     F_[c.patch](c.c) = F;

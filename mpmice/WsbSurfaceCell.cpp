@@ -39,7 +39,7 @@ WsbSurface wsb_surface_cell(const SolidBurnModel& model, const WsbIgnition& ig, 
 
 double wsb_burnable_mass(const BurnCell& cell) {
   constexpr double kMinCellDensity = 1e-12;  // [kg/m^3]
-  return std::max(0.0, cell.solid_mass - cell.in->grid.cell_volume() * kMinCellDensity);
+  return std::max(0.0, cell.solid_mass - cell.volume * kMinCellDensity);
 }
 
 }  // namespace tephra

@@ -32,7 +32,7 @@ struct WsbSurface {
 // values wm (SolidBurnSupport::corner_masses).
 WsbSurface wsb_surface_cell(const SolidBurnModel& m, const WsbIgnition& ig, const double wm[8], const BurnCell& cell);
 
-// The most a WSB model burns in the cell: its solid mass less V x 1e-12
+// The most a WSB model burns in the cell: its solid mass less V x 1e-12 (V = cell.volume)
 // kg/m^3 (Uintah's MIN_MASS_IN_A_CELL = V d_TINY_RHO; the value 1e-12 is
 // assumed, as in Simple_Burn), never negative.
 double wsb_burnable_mass(const BurnCell& cell);
