@@ -188,6 +188,25 @@ void MpmComponent::set_node_boxes() {
   for (int d = 0; d < 3; ++d)
     if (!box.empty() && layout_.level.periodic[d]) box.lo[d] = 0, box.hi[d] = g.n[d];
   node_sums_.set_boxes(box, g.n);
+  // The node-wise passes (NodeGrid::active, mpm/NodeRuns.h) visit this box
+  // only, instead of the whole grid on every rank (session 23): a node outside
+  // it gets no particle sum of this rank and no combine, so it holds 0 and
+  // nothing of the step reads it here. Closed under the symmetry faces'
+  // (extra node, mirror node) pairs: a box reaching any node of the layers
+  // within 2 extra of a face takes all of them, so that the folds and the
+  // grid BCs pair nodes inside the box.
+  NodeBox active = box;
+  for (int d = 0; d < 3 && !active.empty(); ++d) {
+    const int e = g.extra[d];
+    if (e <= 0 || layout_.level.periodic[d]) continue;
+    if (active.lo[d] <= 2 * e) active.lo[d] = 0, active.hi[d] = std::max(active.hi[d], std::min(2 * e + 1, g.n[d]));
+    if (active.hi[d] - 1 >= g.n[d] - 1 - 2 * e)
+      active.hi[d] = g.n[d], active.lo[d] = std::min(active.lo[d], std::max(g.n[d] - 1 - 2 * e, 0));
+  }
+  for (MpmMaterial& m : setup_.materials) {
+    m.grid.restricted = true;
+    m.grid.active = active;
+  }
 }
 
 // P2G's arrays: m_g, V_g, f_ext sums; v_g the m-weighted and sigma_g the V-weighted mean.
