@@ -311,9 +311,26 @@ void MpmComponent::migrate_particles() {
     std::vector<int> dest(p.size());
     std::vector<std::vector<std::size_t>> leaving(std::size_t(r.size));
     std::vector<char> keep(p.size(), 1);
+    // A particle still in one of this rank's patches stays: patch_of's cell
+    // (floor, clamped to the interior) tested against the own patches' cell
+    // ranges first, the level's lookup only for the others (the same answer:
+    // the patches do not overlap).
+    const Grid& lv = layout_.level;
+    bool any_leaving = false;
     for (std::size_t i = 0; i < p.size(); ++i) {
-      dest[i] = layout_.owner[std::size_t(patch_of(p.x[i]))];
-      if (dest[i] != r.rank) leaving[std::size_t(dest[i])].push_back(i), keep[i] = 0;
+      IntVec3 c;
+      for (int d = 0; d < 3; ++d)
+        c[d] = std::clamp(int(std::floor((p.x[i][d] - lv.lower[d]) / lv.dx[d])), 0, lv.cells[d] - 1);
+      bool own = false;
+      for (int q : layout_.own) {
+        const Patch& P = lv.patches[std::size_t(q)];
+        if ((c.array() >= P.lo.array()).all() && (c.array() < P.hi.array()).all()) {
+          own = true;
+          break;
+        }
+      }
+      dest[i] = own ? r.rank : layout_.owner[std::size_t(patch_of(p.x[i]))];
+      if (dest[i] != r.rank) leaving[std::size_t(dest[i])].push_back(i), keep[i] = 0, any_leaving = true;
     }
     // Column by column: each block holds every fixed column of its particles, then the history.
     std::vector<std::vector<double>> send(std::size_t(r.size));
@@ -331,7 +348,7 @@ void MpmComponent::migrate_particles() {
       }
     }
     const std::vector<std::vector<double>> recv = exchange_blocks(send);
-    remove_particles(p, keep, {&m.plastic_work, &m.heating}, {&m.L, &m.F_old});
+    if (any_leaving) remove_particles(p, keep, {&m.plastic_work, &m.heating}, {&m.L, &m.F_old});  // else the identity
     for (int s = 0; s < r.size; ++s) {
       const std::vector<double>& b = recv[std::size_t(s)];
       if (s == r.rank || b.empty()) continue;
