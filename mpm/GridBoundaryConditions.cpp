@@ -1,5 +1,7 @@
 #include "mpm/GridBoundaryConditions.h"
 
+#include <algorithm>
+
 #include <string>
 
 #include "core/deck/DeckNode.h"
@@ -71,15 +73,19 @@ void GridBoundaryConditions::apply(const NodeGrid& g, std::vector<Vec3>& velocit
   // domain face (index extra_d or n_d - 1 - extra_d), over the domain's nodes
   // in the other two directions. As Vaango (Patch::FaceNodes: the face nodes
   // of the patch without its extra cells), the nodes of the extra cells are
-  // left free.
+  // left free. Only the nodes of the active box (NodeGrid::active_box: the
+  // whole grid in one process; on ranks closed under the mirror pairs).
+  const NodeBox box = g.active_box();
+  if (box.empty()) return;
   auto for_face = [&](int f, auto&& fn) {
     const int d = f / 2;
     const int plane = (f % 2 == 0) ? g.extra[d] : g.n[d] - 1 - g.extra[d];
     const int a = (d + 1) % 3, b = (d + 2) % 3;
     IntVec3 c;
     c[d] = plane;
-    for (int jb = g.extra[b]; jb < g.n[b] - g.extra[b]; ++jb)
-      for (int ja = g.extra[a]; ja < g.n[a] - g.extra[a]; ++ja) {
+    if (plane < box.lo[d] || plane >= box.hi[d]) return;
+    for (int jb = std::max(g.extra[b], box.lo[b]); jb < std::min(g.n[b] - g.extra[b], box.hi[b]); ++jb)
+      for (int ja = std::max(g.extra[a], box.lo[a]); ja < std::min(g.n[a] - g.extra[a], box.hi[a]); ++ja) {
         c[a] = ja;
         c[b] = jb;
         fn(velocity[g.index(c)], d);
@@ -96,8 +102,9 @@ void GridBoundaryConditions::apply(const NodeGrid& g, std::vector<Vec3>& velocit
       IntVec3 c, m;
       c[d] = face_plane + dir * k;
       m[d] = face_plane - dir * k;
-      for (int jb = 0; jb < g.n[b]; ++jb)
-        for (int ja = 0; ja < g.n[a]; ++ja) {
+      if (c[d] < box.lo[d] || c[d] >= box.hi[d]) continue;
+      for (int jb = box.lo[b]; jb < box.hi[b]; ++jb)
+        for (int ja = box.lo[a]; ja < box.hi[a]; ++ja) {
           c[a] = m[a] = ja;
           c[b] = m[b] = jb;
           fn(velocity[g.index(c)], velocity[g.index(m)], d);

@@ -428,6 +428,7 @@ void MpmComponent::load_state(const StateArchive& a) {
     }
     if (!ok) throw RuntimeFailure("checkpoint arrays of MPM material " + std::to_string(m.index) +
                                   " have inconsistent sizes");
+    m.grid.cleared = NodeBox{IntVec3::Zero(), m.grid.n};  // whole node arrays restored: the next reset zeroes all
   }
   stable_dt_ = a.scalar("mpm.stable_dt");
   time_ = a.scalar("mpm.time");

@@ -188,6 +188,25 @@ void MpmComponent::set_node_boxes() {
   for (int d = 0; d < 3; ++d)
     if (!box.empty() && layout_.level.periodic[d]) box.lo[d] = 0, box.hi[d] = g.n[d];
   node_sums_.set_boxes(box, g.n);
+  // The node-wise passes (NodeGrid::active, mpm/NodeRuns.h) visit this box
+  // only, instead of the whole grid on every rank (session 23): a node outside
+  // it gets no particle sum of this rank and no combine, so it holds 0 and
+  // nothing of the step reads it here. Closed under the symmetry faces'
+  // (extra node, mirror node) pairs: a box reaching any node of the layers
+  // within 2 extra of a face takes all of them, so that the folds and the
+  // grid BCs pair nodes inside the box.
+  NodeBox active = box;
+  for (int d = 0; d < 3 && !active.empty(); ++d) {
+    const int e = g.extra[d];
+    if (e <= 0 || layout_.level.periodic[d]) continue;
+    if (active.lo[d] <= 2 * e) active.lo[d] = 0, active.hi[d] = std::max(active.hi[d], std::min(2 * e + 1, g.n[d]));
+    if (active.hi[d] - 1 >= g.n[d] - 1 - 2 * e)
+      active.hi[d] = g.n[d], active.lo[d] = std::min(active.lo[d], std::max(g.n[d] - 1 - 2 * e, 0));
+  }
+  for (MpmMaterial& m : setup_.materials) {
+    m.grid.restricted = true;
+    m.grid.active = active;
+  }
 }
 
 // P2G's arrays: m_g, V_g, f_ext sums; v_g the m-weighted and sigma_g the V-weighted mean.
@@ -292,9 +311,26 @@ void MpmComponent::migrate_particles() {
     std::vector<int> dest(p.size());
     std::vector<std::vector<std::size_t>> leaving(std::size_t(r.size));
     std::vector<char> keep(p.size(), 1);
+    // A particle still in one of this rank's patches stays: patch_of's cell
+    // (floor, clamped to the interior) tested against the own patches' cell
+    // ranges first, the level's lookup only for the others (the same answer:
+    // the patches do not overlap).
+    const Grid& lv = layout_.level;
+    bool any_leaving = false;
     for (std::size_t i = 0; i < p.size(); ++i) {
-      dest[i] = layout_.owner[std::size_t(patch_of(p.x[i]))];
-      if (dest[i] != r.rank) leaving[std::size_t(dest[i])].push_back(i), keep[i] = 0;
+      IntVec3 c;
+      for (int d = 0; d < 3; ++d)
+        c[d] = std::clamp(int(std::floor((p.x[i][d] - lv.lower[d]) / lv.dx[d])), 0, lv.cells[d] - 1);
+      bool own = false;
+      for (int q : layout_.own) {
+        const Patch& P = lv.patches[std::size_t(q)];
+        if ((c.array() >= P.lo.array()).all() && (c.array() < P.hi.array()).all()) {
+          own = true;
+          break;
+        }
+      }
+      dest[i] = own ? r.rank : layout_.owner[std::size_t(patch_of(p.x[i]))];
+      if (dest[i] != r.rank) leaving[std::size_t(dest[i])].push_back(i), keep[i] = 0, any_leaving = true;
     }
     // Column by column: each block holds every fixed column of its particles, then the history.
     std::vector<std::vector<double>> send(std::size_t(r.size));
@@ -312,7 +348,7 @@ void MpmComponent::migrate_particles() {
       }
     }
     const std::vector<std::vector<double>> recv = exchange_blocks(send);
-    remove_particles(p, keep, {&m.plastic_work, &m.heating}, {&m.L, &m.F_old});
+    if (any_leaving) remove_particles(p, keep, {&m.plastic_work, &m.heating}, {&m.L, &m.F_old});  // else the identity
     for (int s = 0; s < r.size; ++s) {
       const std::vector<double>& b = recv[std::size_t(s)];
       if (s == r.rank || b.empty()) continue;

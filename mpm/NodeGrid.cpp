@@ -1,5 +1,7 @@
 #include "mpm/NodeGrid.h"
 
+#include "mpm/NodeRuns.h"
+
 namespace tephra {
 
 namespace {
@@ -23,10 +25,37 @@ void assign_zero(std::vector<T>& v, std::size_t n, const T& zero) {
   for (long i = 0; i < count; ++i) d[i] = zero;
 }
 
+// v = 0 over the runs only (v has count() entries already).
+template <class T>
+void zero_runs(std::vector<T>& v, const NodeRuns& r, const T& zero) {
+  T* d = v.data();
+  for_each_run_node(r, [&](std::size_t gi) { d[gi] = zero; }, kMinParallelNodes);
+}
+
 }  // namespace
 
 void NodeGrid::reset() {
   const std::size_t c = count();
+  const bool sized = mass.size() == c && volume.size() == c && velocity.size() == c && velocity_star.size() == c &&
+                     acceleration.size() == c && external_force.size() == c && internal_force.size() == c &&
+                     stress.size() == (node_stress ? c : 0);
+  if (restricted && sized) {
+    // Outside the previous box every array holds 0 already (nothing writes
+    // outside the active box, NodeGrid.h): the hull of both boxes is all to zero.
+    const NodeBox z = cleared.hull(active);
+    cleared = active;
+    const NodeRuns r = node_runs(*this, z);
+    zero_runs(mass, r, 0.0);
+    zero_runs(volume, r, 0.0);
+    zero_runs(velocity, r, Vec3(Vec3::Zero()));
+    zero_runs(velocity_star, r, Vec3(Vec3::Zero()));
+    zero_runs(acceleration, r, Vec3(Vec3::Zero()));
+    zero_runs(external_force, r, Vec3(Vec3::Zero()));
+    zero_runs(internal_force, r, Vec3(Vec3::Zero()));
+    if (node_stress) zero_runs(stress, r, Mat3(Mat3::Zero()));
+    return;
+  }
+  cleared = NodeBox{IntVec3::Zero(), n};  // all of it zeroed below
   assign_zero(mass, c, 0.0);
   assign_zero(volume, c, 0.0);
   assign_zero(velocity, c, Vec3(Vec3::Zero()));

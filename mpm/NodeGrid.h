@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "core/base/Types.h"
+#include "mpm/NodeBox.h"
 
 namespace tephra {
 
@@ -34,6 +35,19 @@ struct NodeGrid {
   // per stencil entry of P2G saved). Nothing in the step reads it.
   bool node_stress = true;
 
+  // The nodes the node-wise passes of a step visit (zeroing, v = p/m,
+  // integration, grid BCs, symmetry folds, the MUSL node choices; loops in
+  // mpm/NodeRuns.h). The whole grid unless `restricted`: on MPI ranks
+  // MpmComponent::set_node_boxes restricts every material's grid to the
+  // rank's node box closed under the symmetry mirrors (docs/parallel.md
+  // "Session 23"). Outside it the arrays hold 0 (reset() zeroes what the
+  // previous box held), as they did when every rank ran the passes over the
+  // whole grid: a node outside the box gets no particle sum and no combine.
+  NodeBox active;
+  bool restricted = false;
+  NodeBox cleared;  // restricted: the nodes the last reset() zeroed (the hull of the last two boxes)
+  NodeBox active_box() const { return restricted ? active : NodeBox{IntVec3::Zero(), n}; }
+
   std::size_t count() const { return std::size_t(n[0]) * n[1] * n[2]; }
   std::size_t index(int i, int j, int k) const {
     return std::size_t(i) + std::size_t(n[0]) * (std::size_t(j) + std::size_t(n[1]) * k);
@@ -43,6 +57,8 @@ struct NodeGrid {
 
   // Sizes every array to count() and sets it to zero (Vaango's grid reset).
   // Threaded (NodeGrid.cpp): zero is zero for any split, so the same bits.
+  // Restricted: zeroes only the hull of this and the previous active box
+  // (the rest is 0 already), unless the arrays change size.
   void reset();
 };
 

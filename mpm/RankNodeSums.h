@@ -27,28 +27,9 @@
 #include <vector>
 
 #include "core/base/Types.h"
+#include "mpm/NodeBox.h"
 
 namespace tephra {
-
-// Node index range [lo, hi) of a node grid (empty when any hi <= lo).
-struct NodeBox {
-  IntVec3 lo = IntVec3::Zero();
-  IntVec3 hi = IntVec3::Zero();
-  bool empty() const { return (hi.array() <= lo.array()).any(); }
-  bool contains(int i, int j, int k) const {
-    return i >= lo[0] && i < hi[0] && j >= lo[1] && j < hi[1] && k >= lo[2] && k < hi[2];
-  }
-  NodeBox intersect(const NodeBox& o) const {
-    return {lo.cwiseMax(o.lo), hi.cwiseMin(o.hi)};
-  }
-  std::size_t count() const {
-    return empty() ? 0 : std::size_t(hi[0] - lo[0]) * std::size_t(hi[1] - lo[1]) * std::size_t(hi[2] - lo[2]);
-  }
-  // Position of node (i,j,k) in the box, i fastest.
-  std::size_t offset(int i, int j, int k) const {
-    return std::size_t(i - lo[0]) + std::size_t(hi[0] - lo[0]) * (std::size_t(j - lo[1]) + std::size_t(hi[1] - lo[1]) * std::size_t(k - lo[2]));
-  }
-};
 
 // One node array (NodeGrid index order, `width` doubles per node) to combine.
 // weight < 0: a sum; otherwise a weighted mean whose weights are the array

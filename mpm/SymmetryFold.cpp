@@ -1,5 +1,7 @@
 #include "mpm/SymmetryFold.h"
 
+#include "mpm/NodeRuns.h"
+
 namespace tephra {
 
 namespace {
@@ -20,8 +22,12 @@ void for_pairs(const NodeGrid& g, int f, Fn&& fn) {
     e[d] = face_plane + out * k;
     m[d] = face_plane - out * k;
     if (m[d] < 0 || m[d] >= g.n[d]) continue;  // a domain thinner than the extra layers
-    for (int jb = 0; jb < g.n[b]; ++jb)
-      for (int ja = 0; ja < g.n[a]; ++ja) {
+    // The active box's nodes of the other two directions (the whole grid in one
+    // process); the box is closed under the mirror pairs (MpmComponent::set_node_boxes).
+    const NodeBox box = g.active_box();
+    if (box.empty() || e[d] < box.lo[d] || e[d] >= box.hi[d]) continue;
+    for (int jb = box.lo[b]; jb < box.hi[b]; ++jb)
+      for (int ja = box.lo[a]; ja < box.hi[a]; ++ja) {
         e[a] = m[a] = ja;
         e[b] = m[b] = jb;
         fn(g.index(e), g.index(m), d);
@@ -59,12 +65,11 @@ void fold_symmetry_particle_sums(const GridBoundaryConditions& bcs, NodeGrid& g,
   for (int f = 0; f < 6; ++f) any = any || active(bcs, g, f, dims);
   if (!any) return;
   const bool stress = !g.stress.empty();  // NodeGrid::node_stress
-  const long nodes = long(g.count());  // node-wise loops, threaded: the same bits for any thread count
-#pragma omp parallel for schedule(static) if (nodes >= 4096)
-  for (long n = 0; n < nodes; ++n) {  // extensive sums
+  // Node-wise loops over the active box, threaded: the same bits for any thread count.
+  for_each_active_node(g, [&](std::size_t n) {  // extensive sums
     g.velocity[n] *= g.mass[n];
     if (stress) g.stress[n] *= g.volume[n];
-  }
+  });
   for (int f = 0; f < 6; ++f) {
     if (!active(bcs, g, f, dims)) continue;
     fold_field(g, f, g.mass);
@@ -73,11 +78,10 @@ void fold_symmetry_particle_sums(const GridBoundaryConditions& bcs, NodeGrid& g,
     if (stress) fold_field(g, f, g.stress);
     fold_field(g, f, g.external_force);
   }
-#pragma omp parallel for schedule(static) if (nodes >= 4096)
-  for (long n = 0; n < nodes; ++n) {
+  for_each_active_node(g, [&](std::size_t n) {
     if (g.mass[n] > 0.0) g.velocity[n] /= g.mass[n];
     if (stress && g.volume[n] > 0.0) g.stress[n] /= g.volume[n];
-  }
+  });
 }
 
 void fold_symmetry_scalar(const GridBoundaryConditions& bcs, const NodeGrid& g, std::vector<double>& q) {
@@ -101,13 +105,13 @@ void fold_symmetry_velocity(const GridBoundaryConditions& bcs, const NodeGrid& g
   for (int f = 0; f < 6; ++f) any = any || active(bcs, g, f, dims);
   if (!any) return;
   // velocity = P / m_folded with P the unfolded momentum sum: P = velocity m_folded.
-  const long nodes = long(g.count());  // node-wise loops, threaded: the same bits for any thread count
-#pragma omp parallel for schedule(static) if (nodes >= 4096)
-  for (long n = 0; n < nodes; ++n) velocity[n] *= g.mass[n];
+  // Node-wise loops over the active box, threaded: the same bits for any thread count.
+  for_each_active_node(g, [&](std::size_t n) { velocity[n] *= g.mass[n]; });
   for (int f = 0; f < 6; ++f)
     if (active(bcs, g, f, dims)) fold_field(g, f, velocity);
-#pragma omp parallel for schedule(static) if (nodes >= 4096)
-  for (long n = 0; n < nodes; ++n) velocity[n] = g.mass[n] > 0.0 ? Vec3(velocity[n] / g.mass[n]) : Vec3::Zero();
+  for_each_active_node(g, [&](std::size_t n) {
+    velocity[n] = g.mass[n] > 0.0 ? Vec3(velocity[n] / g.mass[n]) : Vec3::Zero();
+  });
 }
 
 }  // namespace tephra

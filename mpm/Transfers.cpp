@@ -1,6 +1,7 @@
 #include "mpm/Transfers.h"
 
 #include "mpm/BandTag.h"
+#include "mpm/NodeRuns.h"
 #include "mpm/PatchBand.h"
 #include "mpm/shape/AxisStencils.h"
 
@@ -129,11 +130,10 @@ void scatter_particles(const Particles& p, const Stencils& s, const Vec3& body_f
     else run(std::false_type{});
   });
   if (band) reduce_p2g_band(*band, stress, Force, g);
-#pragma omp parallel for schedule(static) if (nn >= kMinParallel)
-  for (std::size_t gi = 0; gi < nn; ++gi) {
+  for_each_active_node(g, [&](std::size_t gi) {  // the active box (mpm/NodeRuns.h): the whole grid in one process
     if (g.mass[gi] > 0.0) g.velocity[gi] /= g.mass[gi];
     if (stress && g.volume[gi] > 0.0) g.stress[gi] /= g.volume[gi];
-  }
+  }, long(kMinParallel));
 }
 
 }  // namespace
@@ -173,10 +173,9 @@ void compute_internal_force(const Particles& p, const Stencils& s, NodeGrid& g, 
     band->reduce(3, [&](std::size_t gi, const double* q) { fint[gi] = Eigen::Map<const Vec3>(q); });
 }
 
+// Over the active box (NodeGrid::active_box: the whole grid in one process).
 void integrate_grid_velocity(NodeGrid& g, double dt) {
-  const std::size_t nn = g.count();
-#pragma omp parallel for schedule(static) if (nn >= kMinParallel)
-  for (std::size_t gi = 0; gi < nn; ++gi) {
+  for_each_active_node(g, [&](std::size_t gi) {
     if (g.mass[gi] > 0.0) {
       g.acceleration[gi] = (g.internal_force[gi] + g.external_force[gi]) / g.mass[gi];
       g.velocity_star[gi] = g.velocity[gi] + g.acceleration[gi] * dt;
@@ -184,13 +183,12 @@ void integrate_grid_velocity(NodeGrid& g, double dt) {
       g.acceleration[gi].setZero();
       g.velocity_star[gi].setZero();
     }
-  }
+  }, long(kMinParallel));
 }
 
 void acceleration_from_velocities(NodeGrid& g, double dt) {
-  const std::size_t nn = g.count();
-#pragma omp parallel for schedule(static) if (nn >= kMinParallel)
-  for (std::size_t gi = 0; gi < nn; ++gi) g.acceleration[gi] = (g.velocity_star[gi] - g.velocity[gi]) / dt;
+  for_each_active_node(g, [&](std::size_t gi) { g.acceleration[gi] = (g.velocity_star[gi] - g.velocity[gi]) / dt; },
+                       long(kMinParallel));
 }
 
 void velocity_gradients(const Stencils& s, const NodeGrid& g, std::vector<Mat3>& L) {

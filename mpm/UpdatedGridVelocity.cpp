@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "mpm/BandTag.h"
+#include "mpm/NodeRuns.h"
 #include "mpm/PatchBand.h"
 #include "mpm/shape/AxisStencils.h"
 
@@ -65,11 +66,11 @@ namespace tephra {
 
 void keep_stable_usl_nodes(const NodeGrid& g, double limit, double cell_volume, const std::vector<Vec3>& v_star,
                            std::vector<Vec3>& v) {
-  const long nodes = long(v.size());
-  // Node by node, no sums: the same bits for any thread count.
-#pragma omp parallel for schedule(static) if (nodes >= 4096)
-  for (long n = 0; n < nodes; ++n)
+  // Node by node over the active box (the whole grid in one process), no sums:
+  // the same bits for any thread count.
+  for_each_active_node(g, [&](std::size_t n) {
     if (g.volume[n] >= limit * cell_volume) v[n] = v_star[n];
+  });
 }
 
 }  // namespace tephra
@@ -78,30 +79,52 @@ namespace tephra {
 
 std::size_t usl_needed_nodes(const NodeGrid& g, double limit, double cell_volume, std::vector<unsigned char>& needed) {
   const std::size_t nodes = g.count();
-  needed.resize(nodes);
+  // Restricted to the active box (on MPI ranks, NodeGrid.h): 0 outside it
+  // (no particle of this rank reaches a node there); in one process every
+  // entry is written below (0 or 1), no separate zero fill.
+  if (g.restricted) needed.assign(nodes, 0);
+  else needed.resize(nodes);
   unsigned char* need = needed.data();
   const long count = long(nodes);
+  const NodeRuns runs = node_runs(g);
+  const long nruns = runs.count;
+  const std::size_t len = runs.length;
   std::size_t weak = 0;
-  // Every entry written (0 or 1): no separate zero fill. Threaded: a count is exact in any order.
+  // Threaded over the runs (one run, split over the threads, for the whole
+  // grid): a count is exact in any order.
+  if (nruns == 1) {
+    const long n0 = long(runs.first), n1 = long(runs.first + len);
 #pragma omp parallel for schedule(static) reduction(+ : weak) if (count >= 4096)
-  for (long n = 0; n < count; ++n) {
-    const bool w = !(g.volume[n] >= limit * cell_volume);  // the negation of keep_stable_usl_nodes' test
-    need[n] = w;
-    weak += w;
+    for (long n = n0; n < n1; ++n) {
+      const bool w = !(g.volume[n] >= limit * cell_volume);  // the negation of keep_stable_usl_nodes' test
+      need[n] = w;
+      weak += w;
+    }
+  } else {
+#pragma omp parallel for schedule(static) reduction(+ : weak) if (long(runs.nodes()) >= 4096)
+    for (long q = 0; q < nruns; ++q)
+      for (std::size_t n = runs.begin(q), e = runs.begin(q) + len; n < e; ++n) {
+        const bool w = !(g.volume[n] >= limit * cell_volume);
+        need[n] = w;
+        weak += w;
+      }
   }
   if (weak == 0) return 0;
   // The node planes c_d <= 2 extra_d or c_d >= n_d - 1 - 2 extra_d of any
   // direction d: whole rows of i where (j, k) is in a y or z layer, else the
   // first and last 2 extra_x + 1 nodes of the row.
+  // Rows of the active box only (the whole grid in one process).
   const int nx = g.n[0], ny = g.n[1], nz = g.n[2];
   const int ex = 2 * g.extra[0], ey = 2 * g.extra[1], ez = 2 * g.extra[2];
-  const long rows = long(ny) * nz;
+  const NodeBox box = g.active_box();
+  const int by = box.hi[1] - box.lo[1];
+  const long rows = long(by) * (box.hi[2] - box.lo[2]);
 #pragma omp parallel for schedule(static) if (count >= 4096)
   for (long r = 0; r < rows; ++r) {
-    const int j = int(r % ny), k = int(r / ny);
+    const int j = box.lo[1] + int(r % by), k = box.lo[2] + int(r / by);
     unsigned char* row = need + g.index(0, j, k);
     const bool layer = j <= ey || j >= ny - 1 - ey || k <= ez || k >= nz - 1 - ez;
-    for (int i = 0; i < nx; ++i)
+    for (int i = box.lo[0]; i < box.hi[0]; ++i)
       if (layer || i <= ex || i >= nx - 1 - ex) row[i] = 1;
   }
   return weak;
@@ -112,10 +135,14 @@ void updated_particle_grid_velocity_at(const Particles& p, const Stencils& s, co
                                        PatchBand* band) {
   band = band_for_scatter(band, s);
   const std::size_t nodes = g.mass.size();
+  const bool resized = out.size() != nodes;
   out.resize(nodes);
   Vec3* o = out.data();
-#pragma omp parallel for schedule(static) if (nodes >= 4096)
-  for (std::size_t n = 0; n < nodes; ++n) o[n].setZero();  // threaded zero fill (same bits)
+  // Threaded zero fill (same bits). On MPI ranks (NodeGrid::restricted) only
+  // where this buffer or g.velocity_star, which it is swapped with, held values
+  // since the last reset: the hull of the last two active boxes (NodeGrid::cleared).
+  const NodeBox zero_box = g.restricted && !resized ? g.cleared : NodeBox{IntVec3::Zero(), g.n};
+  for_each_run_node(node_runs(g, zero_box), [&](std::size_t n) { o[n].setZero(); });
   // No needed node here: nothing to sum. But the band reduce below is
   // collective on ranks (PatchBand::reduce gathers every rank's partials), and
   // whether a rank has a needed node is its own answer: a rank whose node box
@@ -125,7 +152,7 @@ void updated_particle_grid_velocity_at(const Particles& p, const Stencils& s, co
   // nodes of its rank's box, where every rank holds the same V_g and so the
   // same needed flags), else the others wait for it for ever (issue 7: the
   // 4-rank hang with fewer patches than ranks).
-  const bool any_needed = std::find(needed.begin(), needed.end(), 1) != needed.end();
+  const bool any_needed = std::find(needed.begin(), needed.end(), 1) != needed.end();  // 0 outside the active box
   if (!any_needed) {
     reduce_momentum(band, o);  // every rank's band partials are zero then (no particle reaches a needed node)
     return;
@@ -146,9 +173,9 @@ void updated_particle_grid_velocity_at(const Particles& p, const Stencils& s, co
     });
   });
   reduce_momentum(band, o);
-#pragma omp parallel for schedule(static) if (nodes >= 4096)
-  for (std::size_t n = 0; n < nodes; ++n)
+  for_each_active_node(g, [&](std::size_t n) {  // needed nodes lie in the active box
     if (need[n]) o[n] = g.mass[n] > 0.0 ? Vec3(o[n] / g.mass[n]) : Vec3::Zero();
+  });
 }
 
 }  // namespace tephra
