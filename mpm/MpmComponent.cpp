@@ -14,6 +14,7 @@
 #include "mpm/Axisymmetric.h"
 #include "mpm/SymmetryFold.h"
 #include "mpm/DeformationGradient.h"
+#include "mpm/StableTimestep.h"
 #include "mpm/StrainWork.h"
 #include "mpm/GridDamping.h"
 #include "mpm/ParticleReorder.h"
@@ -130,15 +131,10 @@ void MpmComponent::initialize() {
 // c_p = c(F_{n+1}) the dilatational wave speed of the model, v_p = v_n the
 // velocity the particle carried into step n (SerialMPM updates it only later,
 // in interpolateToParticlesAndUpdate). Infinity when there are no particles.
+// (mpm/StableTimestep.h: one division per direction, the bits of the
+// quotient-by-quotient minimum).
 double MpmComponent::material_stable_timestep(const MpmMaterial& m) const {
-  double dt = std::numeric_limits<double>::infinity();
-  const Particles& p = m.particles;
-  const long np = static_cast<long>(p.size());
-  const Vec3 dx = setup_.grid.dx;
-  // min is exact and independent of the order: the same value for any thread count.
-#pragma omp parallel for schedule(static) reduction(min : dt) if (np >= 4096)
-  for (long i = 0; i < np; ++i)
-    for (int d = 0; d < 3; ++d) dt = std::min(dt, dx[d] / (p.wave_speed[i] + std::abs(p.v[i][d])));
+  const double dt = particle_stable_timestep(m.particles, setup_.grid.dx);
   return layout_.min(dt);  // over the MPI ranks (exact: every rank gets the one-process value)
 }
 

@@ -40,12 +40,19 @@ constexpr std::size_t kMinParallel = 4096;
 // small products) is inlined; without it GCC at -O2 left the Eigen
 // assignments as calls once the band variant made the scatter loop larger
 // (bench_mpm_spheres linear: P2G 2.1x slower).
-template <bool Stress, bool Force, bool Band, class V>
+// Ext false: the f_ext,g sums are left out (the plain path only, when every
+// f_ext,p and b are zero: has_external_force). Each term f S is then +-0
+// (S >= 0), and the reset +0 plus +-0 terms is +0 in round-to-nearest, the
+// value the node array already holds: the same bits without the 3 loads, 3
+// products, 3 sums and 3 stores per stencil entry.
+template <bool Stress, bool Force, bool Band, class V, bool Ext = true>
 [[gnu::flatten]] inline void p2g_particle(const Particles& p, const V& s, const Vec3& body_force, std::size_t i, NodeGrid& g,
                          PatchBand* band, int P) {
+  static_assert(Ext || !Band, "the band path always sums f_ext (its partials are reduced over every slot)");
   const double mp = p.mass[i], vp = p.volume[i];
   const Vec3 momentum = mp * p.v[i];
-  const Vec3 force = p.external_force[i] + mp * body_force;
+  Vec3 force;
+  if constexpr (Ext) force = p.external_force[i] + mp * body_force;
   Mat3 vol_stress;
   if constexpr (Stress) vol_stress = vp * p.stress[i];
   double* mass = g.mass.data();
@@ -61,7 +68,7 @@ template <bool Stress, bool Force, bool Band, class V>
     mass[gi] += mp * wk;
     volume[gi] += vp * wk;
     mom[gi] += momentum * wk;
-    fext[gi] += force * wk;
+    if constexpr (Ext) fext[gi] += force * wk;
     if constexpr (Stress) stress[gi] += vol_stress * wk;
   };
   if constexpr (Band) {
@@ -93,6 +100,18 @@ template <bool Stress, bool Force, bool Band, class V>
   }
 }
 
+// True when some f_ext,p or b is not zero (a NaN counts as not zero): then
+// P2G sums f_ext,g; else every f_ext,g is the reset +0 (p2g_particle, Ext).
+bool has_external_force(const Particles& p, const Vec3& body_force) {
+  if (!(body_force[0] == 0.0 && body_force[1] == 0.0 && body_force[2] == 0.0)) return true;
+  const double* f = p.external_force.empty() ? nullptr : p.external_force.front().data();
+  const long n = static_cast<long>(3 * p.external_force.size());
+  long nonzero = 0;  // a count, the same for any thread split
+#pragma omp parallel for schedule(static) reduction(+ : nonzero) if (n >= 3 * 4096)
+  for (long k = 0; k < n; ++k) nonzero += !(f[k] == 0.0);
+  return nonzero > 0;
+}
+
 // The band sums (PatchBand::reduce) into the node arrays of P2G.
 void reduce_p2g_band(PatchBand& band, bool stress, bool force, NodeGrid& g) {
   band.reduce(stress ? PatchBand::kMaxWidth : 11, [&](std::size_t gi, const double* q) {
@@ -112,22 +131,29 @@ void scatter_particles(const Particles& p, const Stencils& s, const Vec3& body_f
   const std::size_t np = p.size(), nn = g.count();
   const bool stress = g.stress.size() == nn;
   band = band_for_scatter(band, s);
+  const bool ext = has_external_force(p, body_force);
   visit_stencils(s, [&](const auto& view) {
-    auto run = [&](auto stress_tag) {
-      constexpr bool S = decltype(stress_tag)::value;
+    using View = std::decay_t<decltype(view)>;
+    auto run = [&](auto stress_tag, auto ext_tag) {
+      constexpr bool S = decltype(stress_tag)::value, E = decltype(ext_tag)::value;
       if (band)
         for_each_scatter_particle(s.order, np, [&](std::size_t i) {
           const int P = band_tag(*band, view, i, p.x[i]);
-          if (P < 0) p2g_particle<S, Force, false>(p, view, body_force, i, g, band, P);
-          else p2g_particle<S, Force, true>(p, view, body_force, i, g, band, P);
+          if (P < 0) p2g_particle<S, Force, false, View, E>(p, view, body_force, i, g, band, P);
+          else p2g_particle<S, Force, true, View>(p, view, body_force, i, g, band, P);
         });
       else
         for_each_scatter_particle(s.order, np, [&](std::size_t i) {
-          p2g_particle<S, Force, false>(p, view, body_force, i, g, nullptr, -1);
+          p2g_particle<S, Force, false, View, E>(p, view, body_force, i, g, nullptr, -1);
         });
     };
-    if (stress) run(std::true_type{});
-    else run(std::false_type{});
+    if (stress) {
+      if (ext) run(std::true_type{}, std::true_type{});
+      else run(std::true_type{}, std::false_type{});
+    } else {
+      if (ext) run(std::false_type{}, std::true_type{});
+      else run(std::false_type{}, std::false_type{});
+    }
   });
   if (band) reduce_p2g_band(*band, stress, Force, g);
   for_each_active_node(g, [&](std::size_t gi) {  // the active box (mpm/NodeRuns.h): the whole grid in one process

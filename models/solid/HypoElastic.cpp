@@ -12,9 +12,26 @@
 
 namespace tephra {
 
-SolidPointResult hypo_elastic_point(const Eigen::Matrix3d& F_old, const Eigen::Matrix3d& F_new,
-                                    const Eigen::Matrix3d& stress_old, double density0,
-                                    const HypoElasticParams& p, double thermal_strain) {
+namespace {
+
+// The material constants of the point function, formed once per update()
+// instead of once per point: each is the expression the point function
+// evaluated (the same operations on the same parameters), so the same bits.
+struct HypoElasticConstants {
+  double lambda;       // K - 2G/3
+  double two_G;        // 2G
+  double two_K;        // 2K
+  double four_G;       // 4G
+  double K_4G3;        // K + 4G/3
+  explicit HypoElasticConstants(const HypoElasticParams& p)
+      : lambda(p.K - 2.0 * p.G / 3.0), two_G(2.0 * p.G), two_K(2.0 * p.K), four_G(4.0 * p.G),
+        K_4G3(p.K + 4.0 * p.G / 3.0) {}
+};
+
+// hypo_elastic_point with the constants and J = det F_new given.
+inline SolidPointResult hypo_elastic_point_with(const Eigen::Matrix3d& F_old, const Eigen::Matrix3d& F_new,
+                                                const Eigen::Matrix3d& stress_old, double density0,
+                                                const HypoElasticConstants& c, double thermal_strain, double J) {
   const Eigen::Matrix3d I = Eigen::Matrix3d::Identity();
   // Newton polar decomposition (PolarNewton.h): the eigen-solve result to round-off, faster.
   const PolarDecomposition a = polar_decomposition_newton(F_old), b = polar_decomposition_newton(F_new);
@@ -23,17 +40,24 @@ SolidPointResult hypo_elastic_point(const Eigen::Matrix3d& F_old, const Eigen::M
   // Mechanical part: minus the thermal strain increment alpha (T_{n+1} - T_n) I (header).
   const Eigen::Matrix3d de = 0.5 * (G + G.transpose()) - thermal_strain * I;
   // VT eq. 4.2 in the unrotated frame.
-  const Eigen::Matrix3d tau =
-      a.R.transpose() * stress_old * a.R + ((p.K - 2.0 * p.G / 3.0) * de.trace()) * I + (2.0 * p.G) * de;
+  const Eigen::Matrix3d tau = a.R.transpose() * stress_old * a.R + (c.lambda * de.trace()) * I + c.two_G * de;
   SolidPointResult r;
   r.stress = b.R * tau * b.R.transpose();
   r.stress = 0.5 * (r.stress + r.stress.transpose());  // remove round-off asymmetry
-  const double J = F_new.determinant();
   const double pr = r.stress.trace() / 3.0;
   const Eigen::Matrix3d s = r.stress - pr * I;
-  r.energy_density = J * (pr * pr / (2.0 * p.K) + s.squaredNorm() / (4.0 * p.G));
-  r.wave_speed = std::sqrt((p.K + 4.0 * p.G / 3.0) * J / density0);
+  r.energy_density = J * (pr * pr / c.two_K + s.squaredNorm() / c.four_G);
+  r.wave_speed = std::sqrt(c.K_4G3 * J / density0);
   return r;
+}
+
+}  // namespace
+
+SolidPointResult hypo_elastic_point(const Eigen::Matrix3d& F_old, const Eigen::Matrix3d& F_new,
+                                    const Eigen::Matrix3d& stress_old, double density0,
+                                    const HypoElasticParams& p, double thermal_strain) {
+  return hypo_elastic_point_with(F_old, F_new, stress_old, density0, HypoElasticConstants(p), thermal_strain,
+                                 F_new.determinant());
 }
 
 std::vector<HistoryVariable> HypoElastic::history() const {
@@ -42,6 +66,7 @@ std::vector<HistoryVariable> HypoElastic::history() const {
 }
 
 long HypoElastic::update(const SolidUpdateInput& in, const SolidUpdateOutput& out) const {
+  const HypoElasticConstants constants(p_);
   return for_each_point(in.F_new.size(), [&](size_t i) {
     const double J0 = in.F_old[i].determinant(), J = in.F_new[i].determinant();
     if (!(J0 > 0.0) || !(J > 0.0) || !std::isfinite(J) || !std::isfinite(J0)) return false;
@@ -54,8 +79,8 @@ long HypoElastic::update(const SolidUpdateInput& in, const SolidUpdateOutput& ou
       thermal_strain = p_.alpha * (T - T_last);
       T_last = T;
     }
-    const SolidPointResult r =
-        hypo_elastic_point(in.F_old[i], in.F_new[i], in.stress_old[i], in.density0, p_, thermal_strain);
+    const SolidPointResult r = hypo_elastic_point_with(in.F_old[i], in.F_new[i], in.stress_old[i], in.density0,
+                                                       constants, thermal_strain, J);
     if (!r.stress.allFinite()) return false;
     out.stress[i] = r.stress;
     out.wave_speed[i] = r.wave_speed;

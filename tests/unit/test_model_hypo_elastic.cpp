@@ -3,11 +3,14 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <random>
+#include <vector>
 
 #include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
 
 #include "models/solid/HypoElastic.h"
+#include "models/solid/PolarNewton.h"
 #include "tests/support/SolidModelDriver.h"
 
 namespace tephra {
@@ -124,6 +127,73 @@ TEST(ModelHypoElastic, ParametersAndHooks) {
   EXPECT_THROW(create_constitutive_model("hypo_elastic", p), std::invalid_argument);
   p.values.erase("G");
   EXPECT_THROW(create_constitutive_model("hypo_elastic", p), std::invalid_argument);  // required
+}
+
+// The point function as written before session 23 (constants and det F_new
+// formed per point): the reference for the bits.
+SolidPointResult hypo_point_before_session23(const Eigen::Matrix3d& F_old, const Eigen::Matrix3d& F_new,
+                                             const Eigen::Matrix3d& stress_old, double density0,
+                                             const HypoElasticParams& p) {
+  const Eigen::Matrix3d I = Eigen::Matrix3d::Identity();
+  const PolarDecomposition a = polar_decomposition_newton(F_old), b = polar_decomposition_newton(F_new);
+  const Eigen::Matrix3d G = (b.U - a.U) * (0.5 * (a.U + b.U)).inverse();
+  const Eigen::Matrix3d de = 0.5 * (G + G.transpose()) - 0.0 * I;
+  const Eigen::Matrix3d tau =
+      a.R.transpose() * stress_old * a.R + ((p.K - 2.0 * p.G / 3.0) * de.trace()) * I + (2.0 * p.G) * de;
+  SolidPointResult r;
+  r.stress = b.R * tau * b.R.transpose();
+  r.stress = 0.5 * (r.stress + r.stress.transpose());
+  const double J = F_new.determinant();
+  const double pr = r.stress.trace() / 3.0;
+  const Eigen::Matrix3d s = r.stress - pr * I;
+  r.energy_density = J * (pr * pr / (2.0 * p.K) + s.squaredNorm() / (4.0 * p.G));
+  r.wave_speed = std::sqrt((p.K + 4.0 * p.G / 3.0) * J / density0);
+  return r;
+}
+
+// Session 23 forms the material constants once per update() and passes the
+// update's det F_new to the point function: stress, wave speed and energy of
+// update() and of hypo_elastic_point bit for bit those of the earlier point
+// function, for random F_n, F_{n+1} = (I + dt l) F_n and stresses.
+TEST(ModelHypoElastic, UpdateHasTheBitsOfThePointFunctionBeforeSession23) {
+  const HypoElasticParams par{375939.8496240601, 980392.1568627450, 0.0};
+  const HypoElastic model(par);
+  std::mt19937 rng(23);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  const int n = 5000;  // > 4096: the threaded point loop
+  std::vector<Eigen::Matrix3d> F_old(n), F_new(n), L(n), stress_old(n), stress(n);
+  std::vector<double> T(n, 300.0), c(n), W(n), pw(n), heat(n);
+  for (int i = 0; i < n; ++i) {
+    const double size = std::pow(10.0, -6.0 + 5.0 * (i % 6) / 5.0);
+    for (int a = 0; a < 3; ++a)
+      for (int b = 0; b < 3; ++b) {
+        F_old[i](a, b) = (a == b) + size * u(rng);
+        L[i](a, b) = size * u(rng);
+        stress_old[i](a, b) = 1e5 * u(rng);
+      }
+    stress_old[i] = (0.5 * (stress_old[i] + stress_old[i].transpose())).eval();
+    F_new[i] = (Eigen::Matrix3d::Identity() + L[i]) * F_old[i];
+  }
+  SolidUpdateInput in;
+  in.dt = 1e-5;
+  in.density0 = kRho0;
+  in.F_old = F_old;
+  in.F_new = F_new;
+  in.L = L;
+  in.temperature = T;
+  in.stress_old = stress_old;
+  const SolidUpdateOutput out{stress, c, W, pw, heat, {}};
+  ASSERT_EQ(model.update(in, out), -1);
+  for (int i = 0; i < n; ++i) {
+    const SolidPointResult ref = hypo_point_before_session23(F_old[i], F_new[i], stress_old[i], kRho0, par);
+    const SolidPointResult pt = hypo_elastic_point(F_old[i], F_new[i], stress_old[i], kRho0, par);
+    ASSERT_EQ(stress[i], ref.stress) << i;
+    ASSERT_EQ(c[i], ref.wave_speed) << i;
+    ASSERT_EQ(W[i], ref.energy_density) << i;
+    ASSERT_EQ(pt.stress, ref.stress) << i;
+    ASSERT_EQ(pt.wave_speed, ref.wave_speed) << i;
+    ASSERT_EQ(pt.energy_density, ref.energy_density) << i;
+  }
 }
 
 }  // namespace

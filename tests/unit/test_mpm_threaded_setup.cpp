@@ -13,10 +13,13 @@
 //     flat and per-axis (linear, gimp) stencils, with 1 and 2 threads;
 //   * particles_to_grid_and_internal_force (one pass) gives the bits of
 //     particles_to_grid + compute_internal_force on a reset grid, with and
-//     without g.stressFS, for the same stencil forms, with 1 and 2 threads.
+//     without g.stressFS, for the same stencil forms, with 1 and 2 threads;
+//   * P2G without f_ext,g sums when every f_ext,p and b are zero (session 23):
+//     f_ext,g = +0, and one forced particle's f S at its nodes.
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <numeric>
 #include <random>
 
@@ -25,6 +28,7 @@
 #include "mpm/NodeGrid.h"
 #include "mpm/Transfers.h"
 #include "mpm/UpdatedGridVelocity.h"
+#include "mpm/shape/AxisStencils.h"
 #include "mpm/shape/ScatterOrder.h"
 
 namespace tephra {
@@ -247,6 +251,81 @@ TEST(MpmThreadedSetup, FusedP2GAndInternalForceIsTheTwoPasses) {
         expect_same_nodes(ref, fused);
       }
     }
+}
+
+// P2G leaves the f_ext,g sums out when every f_ext,p and b are zero
+// (Transfers.cpp, has_external_force): the node values must be what the sums
+// give. Closed forms: with all terms +-0 (S >= 0) every f_ext,g is +0 (a
+// positive zero: the reset +0 plus +-0 terms); with one particle k carrying
+// f = (1, 2, 4) (exact multiples of S) and all others +-0, f_ext,g = f S_gk
+// at k's stencil nodes and +0 elsewhere; a NaN force reaches k's nodes (a NaN
+// is not zero). Particles_to_grid and the fused pass, three stencil forms,
+// 1 and 2 threads.
+TEST(MpmThreadedSetup, P2GExternalForceSumsWithZeroAndOneForcedParticle) {
+  NodeGrid g;
+  g.origin = Vec3(-1.0, 0.5, 0.0);
+  g.h = Vec3(0.1, 0.2, 0.15);
+  g.n = IntVec3(14, 16, 18);
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> u(0.0, 1.0), s(-1.0, 1.0);
+  Particles p;
+  for (int i = 0; i < 6000; ++i) {  // > 4096: the threaded scatter and scan
+    const Vec3 x = g.origin + Vec3((2 + 9 * u(rng)) * g.h[0], (2 + 11 * u(rng)) * g.h[1], (2 + 13 * u(rng)) * g.h[2]);
+    p.add(x, Vec3(s(rng), s(rng), s(rng)), 0.5 + u(rng), 1e-3 * (0.5 + u(rng)), 300.0, 0.0, i,
+          Mat3::Identity() * 0.5);
+    p.stress.back() = 1e6 * Mat3::Random();
+    const double z = i % 2 ? -0.0 : 0.0;
+    p.external_force.back() = Vec3(z, -z, z);
+  }
+  const Vec3 no_gravity(0.0, -0.0, 0.0);
+  const std::size_t k = 4321;
+  for (int form = 0; form < 3; ++form) {
+    Stencils st;
+    if (form == 0) ASSERT_EQ(compute_stencils(p, g, {InterpolatorKind::Gimp, 1e10}, st), -1);
+    if (form == 1) ASSERT_TRUE(compute_axis_stencils(p, g, {InterpolatorKind::Linear, 1e10}, st));
+    if (form == 2) ASSERT_TRUE(compute_axis_stencils(p, g, {InterpolatorKind::Gimp, 1e10}, st));
+    // S_gk of particle k (the stencil's weights; entries may repeat a node with weight 0).
+    std::vector<double> S_k(g.count(), 0.0);
+    std::vector<char> in_k(g.count(), 0);  // a node of k's stencil (NaN * 0 is NaN there)
+    visit_stencils(st, [&](const auto& view) {
+      view.weights(k, [&](std::size_t gi, double w) { S_k[gi] += w, in_k[gi] = 1; });
+    });
+    for (int variant = 0; variant < 3; ++variant)  // all zero, f_k = (1, 2, 4), f_k = NaN
+      for (int fused : {0, 1})
+        for (int threads : {1, 2}) {
+          SCOPED_TRACE(testing::Message() << "form " << form << " variant " << variant << " fused " << fused
+                                          << " threads " << threads);
+          Threads t(threads);
+          Particles q = p;
+          if (variant == 1) q.external_force[k] = Vec3(1.0, 2.0, 4.0);
+          if (variant == 2) q.external_force[k] = Vec3(std::nan(""), 0.0, 0.0);
+          NodeGrid n = g;
+          n.node_stress = false;
+          n.reset();
+          if (fused) particles_to_grid_and_internal_force(q, st, no_gravity, n);
+          else particles_to_grid(q, st, no_gravity, n);
+          int reached = 0;
+          for (std::size_t gi = 0; gi < n.count(); ++gi) {
+            const Vec3& f = n.external_force[gi];
+            if (variant == 2 && in_k[gi]) {
+              ASSERT_TRUE(std::isnan(f[0])) << gi;
+              ++reached;
+              continue;
+            }
+            const Vec3 expect = variant == 1 ? Vec3(S_k[gi], 2.0 * S_k[gi], 4.0 * S_k[gi]) : Vec3::Zero();
+            for (int d = 0; d < 3; ++d) {
+              ASSERT_EQ(f[d], expect[d]) << gi << " " << d;
+              ASSERT_FALSE(std::signbit(f[d])) << gi << " " << d;  // +0, not -0
+            }
+            reached += expect[0] > 0.0;
+          }
+          // k's nodes were checked: its nodes with S > 0 (variant 1), all its stencil nodes (NaN).
+          const long positive = std::count_if(S_k.begin(), S_k.end(), [](double w) { return w > 0.0; });
+          if (variant == 1) ASSERT_EQ(reached, positive);
+          if (variant == 2) ASSERT_EQ(reached, std::count(in_k.begin(), in_k.end(), 1));
+          ASSERT_GE(positive, 8);
+        }
+  }
 }
 
 }  // namespace
