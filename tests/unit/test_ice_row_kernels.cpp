@@ -21,15 +21,10 @@
 #include "core/grid/Loop.h"
 #include "ice/IceAdvection.h"
 #include "ice/IceComponent.h"
+#include "tests/support/ThreadCountScope.h"
 
 namespace tephra {
 namespace {
-
-struct Threads {
-  int saved = thread_count();
-  explicit Threads(int n) { set_thread_count(n); }
-  ~Threads() { set_thread_count(saved); }
-};
 
 // Ideal-gas box n x n x nz, second order, symmetry walls; material m fills the slab
 // m/nm < x < (m+1)/nm with a hot, fast-moving upper half (3-D flow).
@@ -70,7 +65,7 @@ std::string box_deck(int n, int nz, int nm) {
 
 // The state after `steps` steps with `threads` threads.
 std::unique_ptr<IceComponent> run_box(int nm, int threads, int steps) {
-  Threads t(threads);
+  ThreadCountScope t(threads);
   auto deck = load_deck_from_string(box_deck(24, 16, nm), "rows.ups", ".");
   auto ice = make_ice_component(*deck);
   ice->initialize();
@@ -148,7 +143,7 @@ TEST(IceRowKernels, UnitVolumeFractionFluxIsPhi) {
 
 TEST(IceRowKernels, OutfluxCheckNamesTheFirstCellInKJIOrder) {
   const int n = 24;  // 13824 cells: the screen runs on two threads
-  Threads t(2);
+  ThreadCountScope t(2);
   const Grid g = box_grid(n);
   FaceScalars u(g, 0);
   for (int d = 0; d < 3; ++d) u.at(d, 0).fill(0.0);

@@ -22,6 +22,7 @@
 #include "mpm/MpmComponent.h"
 #include "mpm/ParticleReorder.h"
 #include "mpm/shape/ScatterOrder.h"
+#include "tests/support/ThreadCountScope.h"
 
 namespace tephra {
 namespace {
@@ -45,11 +46,7 @@ std::vector<double> state_of(const Particles& p, std::size_t i) {
 // n below and above kReorderMinParticles (the copy is threaded from there on),
 // with 1 and 2 threads.
 void check_permutation(std::size_t n, int threads) {
-  struct Threads {
-    int saved = thread_count();
-    explicit Threads(int t) { set_thread_count(t); }
-    ~Threads() { set_thread_count(saved); }
-  } use(threads);
+  const ThreadCountScope use(threads);
   std::mt19937 rng(11);
   std::uniform_real_distribution<double> u(-1.0, 1.0);
   Particles p;
@@ -141,12 +138,6 @@ struct DeckRun {
   const Particles& p() const { return c->materials().front().particles; }
 };
 
-struct Threads {
-  int saved = thread_count();
-  explicit Threads(int n) { set_thread_count(n); }
-  ~Threads() { set_thread_count(saved); }
-};
-
 constexpr int kSteps = 60;  // 0.012 s: the blocks move 0.048 m = 2 cells in x and meet
 
 TEST(MpmParticleReorder, SameStatesByIdAsTheUnorderedRun) {
@@ -206,7 +197,7 @@ TEST(MpmParticleReorder, SameBitsForAnyThreadCount) {
   std::vector<Vec3> x1;
   std::vector<long long> id1;
   for (int threads : {1, 2, 3}) {
-    Threads t(threads);
+    ThreadCountScope t(threads);
     const DeckRun r(true, kSteps);
     if (threads == 1) {
       x1 = r.p().x, id1 = r.p().id;

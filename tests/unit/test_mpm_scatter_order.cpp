@@ -19,6 +19,7 @@
 #include "core/grid/Loop.h"
 #include "mpm/Transfers.h"
 #include "mpm/shape/AxisStencils.h"
+#include "tests/support/ThreadCountScope.h"
 
 namespace tephra {
 namespace {
@@ -42,12 +43,6 @@ struct Cloud {
       p.stress.back() = Mat3::Identity() * 1e3 * s(rng);
     }
   }
-};
-
-struct Threads {
-  int saved = thread_count();
-  explicit Threads(int n) { set_thread_count(n); }
-  ~Threads() { set_thread_count(saved); }
 };
 
 // Node rows (y, z) of node n.
@@ -100,7 +95,7 @@ void check_order(const Cloud& c, const Stencils& s, int expected_w_y, int expect
 }
 
 NodeGrid p2g(const Cloud& c, const Stencils& s, int threads) {
-  Threads t(threads);
+  ThreadCountScope t(threads);
   NodeGrid g = c.g;
   particles_to_grid(c.p, s, Vec3(0.0, 0.0, -9.81), g);
   compute_internal_force(c.p, s, g);
@@ -173,7 +168,7 @@ namespace {
 // Cases cover its shortcut (a block already ascending in id, with and without
 // finish() leaving index[j] == j) and the insertion-sort path.
 void check_sort_blocks(const std::vector<std::uint32_t>& keys, const std::vector<long long>& id, int threads) {
-  Threads t(threads);
+  ThreadCountScope t(threads);
   ScatterOrder o;
   o.prepare(keys.size(), 8, 8, 2, 2);  // w = 1: 8 x 8 blocks, keys < 4 * 64
   o.key = keys;

@@ -15,15 +15,10 @@
 
 #include "core/grid/Loop.h"
 #include "mpm/StableTimestep.h"
+#include "tests/support/ThreadCountScope.h"
 
 namespace tephra {
 namespace {
-
-struct Threads {
-  int saved = thread_count();
-  explicit Threads(int n) { set_thread_count(n); }
-  ~Threads() { set_thread_count(saved); }
-};
 
 Particles random_particles(int n, unsigned seed) {
   std::mt19937 rng(seed);
@@ -39,7 +34,7 @@ Particles random_particles(int n, unsigned seed) {
 void expect_bits_of_quotients(const Particles& p, const Vec3& h) {
   const double ref = particle_stable_timestep_by_quotients(p, h);
   for (int threads : {1, 2, 3}) {
-    Threads t(threads);
+    ThreadCountScope t(threads);
     const double dt = particle_stable_timestep(p, h);
     // EXPECT_EQ on doubles is exact; the inf cases compare equal as well.
     EXPECT_EQ(dt, ref) << "threads " << threads;

@@ -30,15 +30,10 @@
 #include "mpm/UpdatedGridVelocity.h"
 #include "mpm/shape/AxisStencils.h"
 #include "mpm/shape/ScatterOrder.h"
+#include "tests/support/ThreadCountScope.h"
 
 namespace tephra {
 namespace {
-
-struct Threads {
-  int saved = thread_count();
-  explicit Threads(int n) { set_thread_count(n); }
-  ~Threads() { set_thread_count(saved); }
-};
 
 TEST(MpmThreadedSetup, ScatterOrderFinishIsTheStableSort) {
   const int ny = 23, nz = 19;
@@ -66,7 +61,7 @@ TEST(MpmThreadedSetup, ScatterOrderFinishIsTheStableSort) {
     ref_block.push_back(std::uint32_t(np));
     for (int threads : {1, 2, 3}) {
       SCOPED_TRACE(threads);
-      Threads t(threads);
+      ThreadCountScope t(threads);
       ScatterOrder o;
       o.prepare(np, ny, nz, span, span);
       o.key = key;
@@ -114,7 +109,7 @@ TEST(MpmThreadedSetup, UslNeededNodesIsTheDefinition) {
     if (ref_weak == 0) std::fill(ref.begin(), ref.end(), 0);  // nothing needed: USL everywhere
     for (int threads : {1, 2, 3}) {
       SCOPED_TRACE(threads);
-      Threads t(threads);
+      ThreadCountScope t(threads);
       std::vector<unsigned char> needed(3, 7);  // stale content must not survive
       EXPECT_EQ(usl_needed_nodes(g, limit, cell_volume, needed), ref_weak);
       EXPECT_EQ(needed, ref);
@@ -124,7 +119,7 @@ TEST(MpmThreadedSetup, UslNeededNodesIsTheDefinition) {
 
 TEST(MpmThreadedSetup, ResetZeroesEveryArray) {
   for (int threads : {1, 2}) {
-    Threads t(threads);
+    ThreadCountScope t(threads);
     NodeGrid g;
     g.n = IntVec3(20, 18, 16);
     g.reset();
@@ -182,7 +177,7 @@ TEST(MpmThreadedSetup, FusedVelocityGradientAndFIsTheTwoPasses) {
     velocity_gradients(st, g, L_ref);
     update_deformation_gradients(DeformationGradientAlgorithm::FirstOrder, 1, dt, L_ref, F_old, F_ref);
     for (int threads : {1, 2}) {
-      Threads t(threads);
+      ThreadCountScope t(threads);
       std::vector<Mat3> L, F;
       velocity_gradients_and_first_order_F(st, g, dt, L, F_old, F);
       ASSERT_EQ(L.size(), L_ref.size());
@@ -243,7 +238,7 @@ TEST(MpmThreadedSetup, FusedP2GAndInternalForceIsTheTwoPasses) {
       for (const Vec3& f : ref.internal_force) fmax = std::max(fmax, f.norm());
       ASSERT_GT(fmax, 0.0);  // the comparison below is not of zeros
       for (int threads : {1, 2}) {
-        Threads t(threads);
+        ThreadCountScope t(threads);
         NodeGrid fused = g;
         fused.node_stress = node_stress;
         fused.reset();
@@ -295,7 +290,7 @@ TEST(MpmThreadedSetup, P2GExternalForceSumsWithZeroAndOneForcedParticle) {
         for (int threads : {1, 2}) {
           SCOPED_TRACE(testing::Message() << "form " << form << " variant " << variant << " fused " << fused
                                           << " threads " << threads);
-          Threads t(threads);
+          ThreadCountScope t(threads);
           Particles q = p;
           if (variant == 1) q.external_force[k] = Vec3(1.0, 2.0, 4.0);
           if (variant == 2) q.external_force[k] = Vec3(std::nan(""), 0.0, 0.0);

@@ -18,6 +18,7 @@
 #include "core/grid/Loop.h"
 #include "models/solid/HypoElastic.h"
 #include "mpm/Transfers.h"
+#include "tests/support/ThreadCountScope.h"
 
 namespace tephra {
 namespace {
@@ -47,15 +48,9 @@ struct Cloud {
 };
 
 // Restores the thread count of the process after a test.
-struct Threads {
-  int saved = thread_count();
-  explicit Threads(int n) { set_thread_count(n); }
-  ~Threads() { set_thread_count(saved); }
-};
-
 // The node arrays after stencils + P2G + internal force with `threads` threads.
 NodeGrid project(Cloud c, int threads, Stencils& st) {
-  Threads t(threads);
+  ThreadCountScope t(threads);
   EXPECT_EQ(compute_stencils(c.p, c.g, {InterpolatorKind::Gimp, 1e10}, st), -1);
   particles_to_grid(c.p, st, Vec3(0.0, -9.81, 0.0), c.g);
   compute_internal_force(c.p, st, c.g);
@@ -151,7 +146,7 @@ TEST(MpmThreads, WithoutAnOrderTheScatterIsTheParticleOrderSum) {
   std::vector<std::size_t> natural(c.p.size());
   for (std::size_t i = 0; i < natural.size(); ++i) natural[i] = i;
   const NodeGrid ref = serial_reference(c, st, natural);
-  Threads t(2);
+  ThreadCountScope t(2);
   NodeGrid g = c.g;
   particles_to_grid(c.p, st, Vec3(0.0, -9.81, 0.0), g);
   compute_internal_force(c.p, st, g);
@@ -169,12 +164,12 @@ TEST(MpmThreads, GathersAndModelUpdateDoNotDependOnThreadCount) {
   std::vector<Mat3> L1, L2;
   Particles p1 = c.p, p2 = c.p;
   {
-    Threads t(1);
+    ThreadCountScope t(1);
     velocity_gradients(st, g, L1);
     grid_to_particles(st, g, 1e-4, p1);
   }
   {
-    Threads t(2);
+    ThreadCountScope t(2);
     velocity_gradients(st, g, L2);
     grid_to_particles(st, g, 1e-4, p2);
   }
@@ -192,7 +187,7 @@ TEST(MpmThreads, GathersAndModelUpdateDoNotDependOnThreadCount) {
   for (std::size_t i = 0; i < F_new.size(); ++i) F_new[i] = Mat3::Identity() + 1e-2 * L1[i] / (L1[i].norm() + 1.0);
   std::vector<double> T(c.p.size(), 300.0);
   auto run = [&](int threads, std::vector<Mat3>& sig, std::vector<double>& cw) {
-    Threads t(threads);
+    ThreadCountScope t(threads);
     std::vector<double> W(c.p.size()), pw(c.p.size()), heat(c.p.size());
     sig = c.p.stress;
     cw.assign(c.p.size(), 0.0);

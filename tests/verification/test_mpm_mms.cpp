@@ -22,15 +22,10 @@
 
 #include "core/grid/Loop.h"
 #include "tests/support/MmsRun.h"
+#include "tests/support/ThreadCountScope.h"
 
 namespace tephra::test {
 namespace {
-
-struct Threads {
-  int saved = thread_count();
-  explicit Threads(int n) { set_thread_count(n); }
-  ~Threads() { set_thread_count(saved); }
-};
 
 // AA 8^3, gimp, 2 ppc, t = 0.005 s, Vaango's initial size (GimpTwoPpcSymmetryFold).
 constexpr double kGimpTwoPpcVaangoSize8 = 1.9032127740e-3;
@@ -41,7 +36,7 @@ struct Study {
 };
 
 Study run_study(const std::string& interpolator) {
-  Threads one(1);
+  ThreadCountScope one(1);
   Study s;
   const int cells[3] = {8, 16, 32};
   for (int k = 0; k < 3; ++k) {
@@ -116,7 +111,7 @@ TEST(MpmMmsConvergence, GimpOnePpcStallsAt16To32) {
 // (session 16: before the last fix 2.6371e-3 against 2.6407e-3 at 8^3). So
 // nothing in the errors of the symmetric runs comes from a boundary.
 TEST(MpmMmsConvergence, SymmetryFacesAreTheBoundaryFreeMirrorProblem) {
-  Threads one(1);
+  ThreadCountScope one(1);
   for (const char* interp : {"gimp", "3rdorderBS"}) {
     MmsRunOptions o;
     o.cells = 8;
@@ -133,7 +128,7 @@ TEST(MpmMmsConvergence, SymmetryFacesAreTheBoundaryFreeMirrorProblem) {
 }
 
 TEST(MpmMmsConvergence, QuadraticBsplineEqualsGimpAtOnePpc) {
-  Threads one(1);
+  ThreadCountScope one(1);
   for (int cells : {8, 16}) {
     MmsRunOptions o;
     o.cells = cells;
@@ -183,7 +178,7 @@ TEST(MpmMmsConvergence, CpGimpSecondOrder) {
 // that a change either way is seen.
 // Observed order 8^3 -> 16^3 (t = 0.005 s) with `ppc` particles per cell direction.
 double order_8_16(const std::string& interpolator, int ppc = 1, double* e8 = nullptr) {
-  Threads one(1);
+  ThreadCountScope one(1);
   double e[2];
   for (int k = 0; k < 2; ++k) {
     MmsRunOptions o;
@@ -236,7 +231,7 @@ TEST(MpmMmsConvergence, CubicBsplineFirstOrder) {
 // to 16^3 (cell-crossing noise) and at 32^3 a particle inverts before t =
 // 0.005 (NumericalFailure).
 TEST(MpmMmsConvergence, LinearForTheRecord) {
-  Threads one(1);
+  ThreadCountScope one(1);
   double e[2];
   for (int k = 0; k < 2; ++k) {
     MmsRunOptions o;

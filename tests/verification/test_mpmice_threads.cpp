@@ -23,15 +23,10 @@
 #include "core/io/OutputFrame.h"
 #include "mpmice/MpmIceComponent.h"
 #include "tests/support/TestPaths.h"
+#include "tests/support/ThreadCountScope.h"
 
 namespace tephra {
 namespace {
-
-struct Threads {
-  int saved = thread_count();
-  explicit Threads(int n) { set_thread_count(n); }
-  ~Threads() { set_thread_count(saved); }
-};
 
 struct Result {
   OutputFrame frame;
@@ -41,7 +36,7 @@ struct Result {
 // `steps` steps of the deck with `threads` threads, dt from the deck's rule
 // (delt_init, then timestep_multiplier x the stable step, at most delt_max).
 Result run(const std::string& deck_name, int steps, int threads) {
-  Threads t(threads);
+  ThreadCountScope t(threads);
   auto deck = load_deck(test::shared_dir() + "/decks/inputs/MPMICE/" + deck_name);
   auto c = make_mpmice_component(*deck);
   c->initialize();
