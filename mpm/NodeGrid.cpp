@@ -32,38 +32,38 @@ void zero_runs(std::vector<T>& v, const NodeRuns& r, const T& zero) {
   for_each_run_node(r, [&](std::size_t gi) { d[gi] = zero; }, kMinParallelNodes);
 }
 
+// fn(v, n, zero) for every node array with the size n reset() gives it.
+template <class Fn>
+void each_node_array(NodeGrid& g, Fn&& fn) {
+  const std::size_t c = g.count();
+  const Vec3 zero3 = Vec3::Zero();
+  fn(g.mass, c, 0.0);
+  fn(g.volume, c, 0.0);
+  fn(g.velocity, c, zero3);
+  fn(g.velocity_star, c, zero3);
+  fn(g.acceleration, c, zero3);
+  fn(g.external_force, c, zero3);
+  fn(g.internal_force, c, zero3);
+  fn(g.stress, g.node_stress ? c : 0, Mat3(Mat3::Zero()));
+}
+
 }  // namespace
 
 void NodeGrid::reset() {
-  const std::size_t c = count();
-  const bool sized = mass.size() == c && volume.size() == c && velocity.size() == c && velocity_star.size() == c &&
-                     acceleration.size() == c && external_force.size() == c && internal_force.size() == c &&
-                     stress.size() == (node_stress ? c : 0);
+  bool sized = true;
+  each_node_array(*this, [&](const auto& v, std::size_t n, const auto&) { sized = sized && v.size() == n; });
   if (restricted && sized) {
     // Outside the previous box every array holds 0 already (nothing writes
     // outside the active box, NodeGrid.h): the hull of both boxes is all to zero.
-    const NodeBox z = cleared.hull(active);
+    const NodeRuns r = node_runs(*this, cleared.hull(active));
     cleared = active;
-    const NodeRuns r = node_runs(*this, z);
-    zero_runs(mass, r, 0.0);
-    zero_runs(volume, r, 0.0);
-    zero_runs(velocity, r, Vec3(Vec3::Zero()));
-    zero_runs(velocity_star, r, Vec3(Vec3::Zero()));
-    zero_runs(acceleration, r, Vec3(Vec3::Zero()));
-    zero_runs(external_force, r, Vec3(Vec3::Zero()));
-    zero_runs(internal_force, r, Vec3(Vec3::Zero()));
-    if (node_stress) zero_runs(stress, r, Mat3(Mat3::Zero()));
+    each_node_array(*this, [&](auto& v, std::size_t n, const auto& zero) {
+      if (n > 0) zero_runs(v, r, zero);
+    });
     return;
   }
   cleared = NodeBox{IntVec3::Zero(), n};  // all of it zeroed below
-  assign_zero(mass, c, 0.0);
-  assign_zero(volume, c, 0.0);
-  assign_zero(velocity, c, Vec3(Vec3::Zero()));
-  assign_zero(velocity_star, c, Vec3(Vec3::Zero()));
-  assign_zero(acceleration, c, Vec3(Vec3::Zero()));
-  assign_zero(external_force, c, Vec3(Vec3::Zero()));
-  assign_zero(internal_force, c, Vec3(Vec3::Zero()));
-  assign_zero(stress, node_stress ? c : 0, Mat3(Mat3::Zero()));
+  each_node_array(*this, [](auto& v, std::size_t n, const auto& zero) { assign_zero(v, n, zero); });
 }
 
 }  // namespace tephra
