@@ -5,6 +5,7 @@ ICE/JWLpp8mmRS.ups (JWL++ rate, Murnaghan reactant, JWLC products, air).
 Usage:
   tests/bench/rate_stick_size_effect.py BUILD_DIR run  R_MM DX_MM [OUT_ROOT] [--slab | --axisym]
   tests/bench/rate_stick_size_effect.py BUILD_DIR front R_MM DX_MM [OUT_ROOT] [--slab | --axisym]
+  ... [--length L_MM]  (only with R_MM = 0: a stick and domain L_MM long, default the deck's 100)
   tests/bench/rate_stick_size_effect.py BUILD_DIR plot  RESULTS.csv PNG   (pure Python PNG)
 
 --slab: a 2-D planar slab of half-thickness R_MM (one cell along z, z+ a
@@ -72,7 +73,7 @@ def make_axisym_deck(r_mm, dx_mm):
     return text, ny, nr
 
 
-def make_deck(r_mm, dx_mm, slab=False):
+def make_deck(r_mm, dx_mm, slab=False, length_mm=100.0):
     """slab: a 2-D planar slab of half-thickness r_mm (one cell along z, the
     z+ face a symmetry plane, so the deck's cylinder about the x axis cuts
     the cells |y| < r_mm; ICE has no axisymmetric form), else the quarter-
@@ -80,7 +81,8 @@ def make_deck(r_mm, dx_mm, slab=False):
     text = open(DECK, encoding="iso-8859-1").read()
     text = text.replace('href="inputs/', 'href="' + os.path.join(DECKS, "inputs") + "/")
     dx = dx_mm * 1e-3
-    nx = int(round(0.1 / dx))
+    length = length_mm * 1e-3
+    nx = int(round(length / dx))
     sym = ("y+", "z+") if r_mm == 0 else ("z+",) if slab else ()
     for s in sym:
         text = re.sub(r'<Face side = "%s">.*?</Face>' % re.escape(s), SYMMETRY_FACE.format(s=s), text,
@@ -91,7 +93,16 @@ def make_deck(r_mm, dx_mm, slab=False):
         ny = int(math.ceil(15.0 / 8.0 * r_mm / dx_mm - 1e-9))
         width, radius = ny * dx, r_mm * 1e-3
     nz, depth = (1, dx) if slab or r_mm == 0 else (ny, width)
-    text = re.sub(r"<upper>.*?</upper>", f"<upper> [1.e-1,{width!r},{depth!r}] </upper>", text, count=1)
+    text = re.sub(r"<upper>.*?</upper>", f"<upper> [{length!r},{width!r},{depth!r}] </upper>", text, count=1)
+    if length_mm != 100.0:
+        # A longer stick (R = 0 only): the cylinder's top at the domain's end and
+        # the end time stretched by the extra length at 5 km/s (below D_CJ, so
+        # the front always reaches the last cm).
+        if r_mm != 0:
+            raise SystemExit("--length is for the infinite-diameter stick (R_MM = 0) only")
+        text = re.sub(r"<top>\s*\[0.1,0.0,0.0\]\s*</top>", f"<top> [{length!r},0.0,0.0] </top>", text, count=1)
+        end = 2.0e-5 + (length - 0.1) / 5000.0
+        text = re.sub(r"<maxTime>.*?</maxTime>", f"<maxTime> {end!r} </maxTime>", text, count=1)
     text = re.sub(r"<resolution>.*?</resolution>", f"<resolution> [{nx}, {ny}, {nz}] </resolution>", text, count=1)
     text = re.sub(r"<radius>.*?</radius>", f"<radius> {radius!r} </radius>", text, count=1)
     # One patch (the deck has [4,1,1]): one process, one thread, so the patches
@@ -104,14 +115,15 @@ def make_deck(r_mm, dx_mm, slab=False):
     return text, nx, ny
 
 
-def out_dir(root, r_mm, dx_mm, slab=False, axisym=False):
+def out_dir(root, r_mm, dx_mm, slab=False, axisym=False, length_mm=100.0):
     prefix = "axi" if axisym else "slab" if slab and r_mm > 0 else ""
-    return os.path.join(root, prefix + f"R{r_mm:g}_dx{dx_mm:g}")
+    suffix = "" if length_mm == 100.0 else f"_L{length_mm:g}"
+    return os.path.join(root, prefix + f"R{r_mm:g}_dx{dx_mm:g}" + suffix)
 
 
-def extract_front(tephra, out, dx, axisym=False):
+def extract_front(tephra, out, dx, axisym=False, length=0.1):
     y = 0.5 * dx
-    line = f"{y},{y},{y},{y},{0.1 - y},{y}" if axisym else f"{y},{y},{y},{0.1 - y},{y},{y}"
+    line = f"{y},{y},{y},{y},{length - y},{y}" if axisym else f"{y},{y},{y},{length - y},{y},{y}"
     cmd = [tephra, "extract", out, "--var", "F", "--material", "0", "--all-times", "--line", line]
     text = subprocess.run(cmd, check=True, capture_output=True, text=True).stdout
     rows = collections.defaultdict(list)
@@ -132,12 +144,16 @@ def fit_slope(pts):
     return sum((t - mt) * (x - mx) for t, x in pts) / sum((t - mt) ** 2 for t, _ in pts)
 
 
-def front_speed(tephra, out, dx, axisym=False):
-    front = extract_front(tephra, out, dx, axisym)
-    window = [(t, x) for t, x in front if t >= 10e-6 - 1e-12 and x <= 0.09]
+def front_speed(tephra, out, dx, axisym=False, length=0.1):
+    """Slopes over t >= 10 us and t >= 14 us (front below length - 1 cm), and
+    over the second half of the stick (length/2 <= x <= length - 1 cm): on a
+    long stick the last one is the steady speed the impact build-up reaches."""
+    front = extract_front(tephra, out, dx, axisym, length)
+    window = [(t, x) for t, x in front if t >= 10e-6 - 1e-12 and x <= length - 0.01]
     late = [(t, x) for t, x in window if t >= 14e-6 - 1e-12]
+    half = [(t, x) for t, x in window if x >= 0.5 * length]
     slope = lambda pts: fit_slope(pts) if len(pts) > 2 else float("nan")  # nan: no front (failed)
-    return front, slope(window), slope(late)
+    return front, slope(window), slope(late), slope(half)
 
 
 def main():
@@ -145,14 +161,22 @@ def main():
     tephra = os.path.join(build, "bin", "tephra")
     if mode == "plot":
         return plot(sys.argv[3], sys.argv[4])
-    args = [a for a in sys.argv[3:] if a not in ("--slab", "--axisym")]
+    argv = sys.argv[3:]
+    length_mm = 100.0
+    if "--length" in argv:
+        k = argv.index("--length")
+        length_mm = float(argv[k + 1])
+        del argv[k:k + 2]
+    args = [a for a in argv if a not in ("--slab", "--axisym")]
     slab = "--slab" in sys.argv
     axisym = "--axisym" in sys.argv
+    if axisym and length_mm != 100.0:
+        raise SystemExit("--length is for the infinite-diameter stick (R_MM = 0) only")
     r_mm, dx_mm = float(args[0]), float(args[1])
     root = args[2] if len(args) > 2 else "/tmp/rate_stick"
-    out = out_dir(root, r_mm, dx_mm, slab, axisym)
+    out = out_dir(root, r_mm, dx_mm, slab, axisym, length_mm)
     if mode == "run":
-        text, nx, ny = make_axisym_deck(r_mm, dx_mm) if axisym else make_deck(r_mm, dx_mm, slab)
+        text, nx, ny = make_axisym_deck(r_mm, dx_mm) if axisym else make_deck(r_mm, dx_mm, slab, length_mm)
         os.makedirs(root, exist_ok=True)
         deck = out + ".ups"
         open(deck, "w").write(text)
@@ -160,10 +184,11 @@ def main():
         # spins at the row loops' barriers (session 15: the 1-patch 3-D stick
         # used 10x the CPU time of the serial run for the same steps).
         subprocess.run([tephra, deck, "--output", out, "--quiet", "--threads", "1"], check=True)
-    front, d10, d14 = front_speed(tephra, out, dx_mm * 1e-3, axisym)
+    front, d10, d14, dhalf = front_speed(tephra, out, dx_mm * 1e-3, axisym, length_mm * 1e-3)
     for t, x in front[::5]:
         print(f"t = {t * 1e6:6.2f} us  front = {x * 1e3:6.2f} mm")
-    print(f"R = {r_mm:g} mm, dx = {dx_mm:g} mm: D(10 us..) = {d10:.0f} m/s, D(14 us..) = {d14:.0f} m/s")
+    print(f"R = {r_mm:g} mm, dx = {dx_mm:g} mm: D(10 us..) = {d10:.0f} m/s, D(14 us..) = {d14:.0f} m/s, "
+          f"D(second half of {length_mm:g} mm) = {dhalf:.0f} m/s")
 
 
 REFERENCE = {
@@ -277,6 +302,13 @@ def plot(results, png):
     for a, d in REFERENCE["souers"]:
         marker(X(a), Y(d), black, "^")
     rows = [r for r in csv.DictReader(open(results)) if r["D"].strip()]
+    # R = 0 rows with geometry = long (session 24: the second-half speed of a
+    # 300-600 mm 1-D stick, run with --length) replace the 100 mm stick's
+    # R = 0 row at the same dx: the 100 mm stick ends before the impact
+    # build-up is over (docs/validation/rate-stick-size-effect.md §10).
+    long_dx = {float(r["dx_mm"]) for r in rows if float(r["R_mm"]) == 0 and r.get("geometry", "").strip() == "long"}
+    rows = [r for r in rows if not (float(r["R_mm"]) == 0 and float(r["dx_mm"]) in long_dx
+                                    and r.get("geometry", "").strip() != "long")]
     # 3-D sticks (and R = 0, the 1-D stick) at 1/R: solid lines, discs. Slabs of
     # half-thickness h at 1/(2h) (the cylinder radius with the same front
     # curvature on the axis, docs/validation/rate-stick-size-effect.md):
