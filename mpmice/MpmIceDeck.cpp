@@ -106,12 +106,16 @@ std::unique_ptr<MpmIceComponent> make_mpmice_component(const Deck& deck) {
   // mpmice/AxisymmetricBurn.h): the surface-area and cell-mass laws run per
   // radian; DDT0 (its crack term is a mass per step), DDT1 (convective area,
   // induction, crack model) and MesoBurn (per-particle clocks) are not
-  // converted, and the ICE-only models are not verified with <axisymmetric>.
+  // converted. The ICE models (JWLpp, ZeroOrder, IandG, ...; session 24) pass:
+  // check_models_in_mpmice admits them only between ICE materials, where they
+  // act on the cell's own masses exactly as in axisymmetric ICE alone
+  // (test_mpmice_axisymmetric_burn: JWL++ gives the same F at every radius).
   if (s.axisymmetric && !s.models.empty()) {
     std::vector<const DeckNode*> model_nodes;
     if (const DeckNode* models = root.child("Models")) model_nodes = models->children_named("Model");
     const std::size_t offset = s.models.size() - model_nodes.size();
     for (std::size_t i = 0; i < s.models.size(); ++i) {
+      if (!dynamic_cast<const SolidBurnModel*>(s.models[i].get())) continue;  // an ICE model between ICE materials
       const std::string t = s.models[i]->type();
       if (t == "Simple_Burn" || t == "Steady_Burn" || t == "Unsteady_Burn" || t == "Test" || t == "SolidReactionModel")
         continue;

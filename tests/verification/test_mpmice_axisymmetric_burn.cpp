@@ -249,6 +249,68 @@ TEST(MpmIceAxisymmetricBurn, SteadyBurnStepIsTheWsbRateTimesRL) {
   EXPECT_NEAR(mass_lost(m0, *r.c), b.mass_burned_last_step(), roundoff + 1e-12 * expected);
 }
 
+// An ICE reaction between ICE materials in axisymmetric MPMICE (session 24):
+// inputs/mpmice/jwlpp_axisym.ups, the same can with the steel cylinder at rest
+// and ANFO reactant (Murnaghan at its P0 = 101325 Pa) outside it, JWL++ to
+// JWLC products with ThresholdPressure 0. Step 1 has no flow (p_equil is
+// uniform, so the face velocities are zero) and F = 0, so each reactant cell
+// converts dF = G p^b (1 - F_0) dt of its mass (Souers' JWL++ law, the 20 %
+// cap far away; F_0 ~ 1e-15 is the product's initial trace), so after the
+// step F - F_0 = G p^b (1 - F_0) dt in every cell, at every radius: the model acts on the cell's own masses, so the
+// per-radian weight r_c must not enter. A source weighted by r (or 1/r) once
+// too often makes F grow (or fall) with r by the factor r_9/r_4 = 2.1.
+// Then 40 steps: the per-radian mass sum_c (rho_r + rho_p) r_c dx dy is
+// conserved (closed can: x+ wall, symmetric y and z faces).
+TEST(MpmIceAxisymmetricBurn, JwlppBetweenIceMaterialsGivesTheLawAtEveryRadius) {
+  set_thread_count(1);
+  CoupledRun r = test::make_coupled_run(test::source_dir() + "/inputs/mpmice/jwlpp_axisym.ups");
+  const Grid& g = r.c->ice().grid();
+  auto ice_mass = [&] {  // per radian, reactant + product
+    double sum = 0;
+    for_each_cell_serial(g.patches[0].cells(), [&](int i, int j, int k) {
+      const double rho = r.c->ice().fields()[1].rho_CC[0](i, j, k) + r.c->ice().fields()[2].rho_CC[0](i, j, k);
+      sum += rho * g.cell_center(i, j, k)[0] * g.dx[0] * g.dx[1];
+    });
+    return sum;
+  };
+  const double M0 = ice_mass();
+  // The product starts as a trace in every cell (rho ~ 1e-15 of the
+  // reactant's), so F_0 = rho_p / (rho_r + rho_p) before the step is kept.
+  auto F_of = [&](int i, int j, int k) {
+    const double rr = r.c->ice().fields()[1].rho_CC[0](i, j, k), rp = r.c->ice().fields()[2].rho_CC[0](i, j, k);
+    return rp / (rr + rp);
+  };
+  CellScalars F0(g, 0);
+  for_each_cell_serial(g.patches[0].cells(), [&](int i, int j, int k) { F0[0](i, j, k) = F_of(i, j, k); });
+  test::run_to(r, 1.0, 1);
+  const double dt = r.time, G = 1.0e-9, b = 1.3;
+  double worst = 0, f_min = 1, f_max = 0;
+  int cells = 0;
+  for_each_cell_serial(g.patches[0].cells(), [&](int i, int j, int k) {
+    if (i < 4) return;  // r < 0.2 m: the steel
+    const double f0 = F0[0](i, j, k), p = r.c->ice().press_equil_CC()[0](i, j, k);
+    const double F = F_of(i, j, k) - f0;  // the converted share of the cell's mass
+    const double law = G * std::pow(p, b) * (1 - f0) * dt;
+    worst = std::max(worst, std::abs(F / law - 1));
+    f_min = std::min(f_min, F), f_max = std::max(f_max, F);
+    ++cells;
+  });
+  std::printf("[mpmice axisym jwlpp] step 1 (dt %.3g s): %d reactant cells, F in [%.17g, %.17g], "
+              "max |F / (G p^b dt) - 1| = %.2e\n", dt, cells, f_min, f_max, worst);
+  EXPECT_EQ(cells, 60);
+  EXPECT_GT(f_min, 1e-10);  // it reacted (G p0^b dt = 3.3e-9 at dt = 1e-6 s)
+  EXPECT_LT(worst, 1e-9);   // rho_p = dm / V and rho_r = (m - dm) / V: round-off of F ~ 1e-16 / 3e-9
+  EXPECT_LT(f_max / f_min - 1, 1e-9);
+  double drift = 0;
+  while (r.steps < 40) {
+    test::run_to(r, 1.0, r.steps + 1);
+    drift = std::max(drift, std::abs(ice_mass() / M0 - 1));
+  }
+  std::printf("[mpmice axisym jwlpp] 40 steps (t = %.4g s): max rel change of the per-radian ICE mass %.2e\n",
+              r.time, drift);
+  EXPECT_LT(drift, 1e-13);
+}
+
 // A burn model without the per-radian conversion (DDT0: its crack term is a
 // mass per step) still stops the deck reader: MissingFeature (exit 3) naming it.
 TEST(MpmIceAxisymmetricBurn, Ddt0WithAxisymmetricIsAMissingFeatureNamingIt) {
