@@ -1,6 +1,7 @@
 // make_mpm_component: the MPM parts of a deck -> an MpmComponent.
 #include <algorithm>
 
+#include "core/base/Log.h"
 #include "core/deck/DeckLoader.h"
 #include "core/deck/DeckNode.h"
 #include "core/geometry/GeometryPiece.h"
@@ -158,6 +159,19 @@ std::unique_ptr<MpmComponent> make_mpm_component(const Deck& deck) {
   GeometryRegistry geometry;
   for (const DeckNode& c : mpm.children)
     if (c.name == "material") setup.materials.push_back(parse_material(c, int(setup.materials.size()), geometry));
+  // Axisymmetric particles (mpm/Axisymmetric.cpp, Vaango's rule): each holds
+  // r dx dy / (res_x res_y) per radian whatever its z, so <res> z > 1 seeds
+  // that many full radians and the material's mass is res_z x rho V, in
+  // Vaango as here. A deck converted from a planar one ([2,2,2]) rarely
+  // means it: warn, naming the element.
+  if (setup.flags.axisymmetric)
+    for (const MpmMaterial& m : setup.materials)
+      for (const ParticleSource& src : m.sources)
+        if (src.res[2] != 1)
+          log::warning(mpm.file + ":" + std::to_string(mpm.line) + ": axisymmetric MPM: material " +
+                       std::to_string(m.index) + " has a <geom_object> with <res> z = " + std::to_string(src.res[2]) +
+                       ": each z-layer carries a full radian (Vaango's rule), so its mass is " +
+                       std::to_string(src.res[2]) + " x rho V; use <res> [nx, ny, 1]");
   for (const DeckNode& c : mpm.children) {
     if (c.name == "material") {
       continue;

@@ -311,6 +311,26 @@ TEST(MpmIceAxisymmetricBurn, JwlppBetweenIceMaterialsGivesTheLawAtEveryRadius) {
   EXPECT_LT(drift, 1e-13);
 }
 
+// <res> z = 2 in an axisymmetric deck (a planar deck's [2,2,2] kept): each
+// z-layer holds a full radian (Vaango's rule, mpm/Axisymmetric.cpp), so the
+// solid's mass doubles; the reader warns, naming the file and the rule.
+TEST(MpmIceAxisymmetricBurn, ResZTwoDoublesTheMassAndWarns) {
+  set_thread_count(1);
+  const double m1 = particle_mass(*make_run().c);
+  testing::internal::CaptureStderr();
+  CoupledRun r2 = test::make_coupled_run(
+      test::source_dir() + "/inputs/mpmice/burning_cylinder_axisym.ups", [](DeckNode& root) {
+        test::deck_node(root, {"MaterialProperties", "MPM", "material", "geom_object", "res"}).text = "[2,2,2]";
+      });
+  const std::string err = testing::internal::GetCapturedStderr();
+  const double m2 = particle_mass(*r2.c);
+  // Per radian: rho R^2 / 2 L = 8900 x 0.02 x 0.5 = 89 kg with res z = 1.
+  EXPECT_NEAR(m1, 8900.0 * kR * kR / 2 * kL, 1e-9 * m1);
+  EXPECT_NEAR(m2 / m1, 2.0, 1e-14);
+  EXPECT_NE(err.find("burning_cylinder_axisym.ups:"), std::string::npos) << err;
+  EXPECT_NE(err.find("<res> z = 2"), std::string::npos) << err;
+}
+
 // A burn model without the per-radian conversion (DDT0: its crack term is a
 // mass per step) still stops the deck reader: MissingFeature (exit 3) naming it.
 TEST(MpmIceAxisymmetricBurn, Ddt0WithAxisymmetricIsAMissingFeatureNamingIt) {
