@@ -54,7 +54,7 @@ double weight(InterpolatorKind kind, double xi, double l, int k) {
 
 TEST(MpmIceAxisymmetricShare, CellWeightIsTheDomainOverlap) {
   double worst = 0, worst_jump = 0;
-  for (InterpolatorKind kind : {InterpolatorKind::Gimp, InterpolatorKind::Linear})
+  for (InterpolatorKind kind : {InterpolatorKind::Gimp})  // the linear hat keeps the side rule (AxisymmetricShare.h)
     for (double l : {0.125, 0.25, 0.5}) {
       double prev = -1;
       for (int s = -1200; s <= 1200; ++s) {
@@ -116,8 +116,7 @@ void radial_translation_flux(const char* interpolator) {
 }
 
 TEST(MpmIceAxisymmetricShare, RadialTranslationFluxIsTheDomainFractionThatCrosses) {
-  radial_translation_flux("linear");
-  radial_translation_flux("gimp");
+  radial_translation_flux("gimp");  // the linear hat keeps the side rule (AxisymmetricShare.h)
 }
 
 }  // namespace
