@@ -10,6 +10,7 @@
 #include "core/grid/Grid.h"
 #include "mpm/GridBoundaryConditions.h"
 #include "mpm/NodeGrid.h"
+#include "mpmice/AxisymmetricShare.h"
 
 namespace tephra {
 
@@ -44,7 +45,10 @@ inline double node_cell_weight(const NodeGrid& ng, const std::array<bool, 6>& sy
 
 // Axisymmetric runs (x = r, per-radian masses; ice/RadialWeights.h): along
 // r a node's mass is split between its two cells by where it came from,
-//   share_above = m_g^+ / m_g,  m_g^+ = sum_{p: r_p >= r_g} m_p S_gp,
+//   share_above = m_g^+ / m_g,  m_g^+ = sum_p a_pg m_p S_gp,
+// a_pg = 1 for r_p >= r_g, 0 below, except where the particle's domain
+// straddles the node (session 24: then the overlap share of
+// mpmice/AxisymmetricShare.h, continuous in r_p),
 // and the cell below gets 1 - share_above (y and z keep the Cartesian 1/2
 // per node and the symmetry doubling). By the partition of unity in r, a
 // particle's mass then lands in the r-range of the cell that holds it (the
@@ -61,17 +65,21 @@ inline double axisymmetric_node_cell_weight(double w, bool on_x_plane, double sh
   return (on_x_plane ? w : 2.0 * w) * share;
 }
 
-// m_above[g] = sum over the particles with r_p >= r_g of m_p S_gp (r_g the
-// node's x position): the m_g^+ above, over the nodes of ng. `scatter(fn)`
-// calls fn(particle, node gi, S_gp) for every stencil entry.
+// m_above[g] = sum_p a_pg m_p S_gp, a_pg the particle's share above node g
+// (axisymmetric_share_above, mpmice/AxisymmetricShare.h: 1 or 0 by the side
+// of r_g the particle lies on, the overlap of its domain where the domain
+// straddles the node): the m_g^+ above, over the nodes of ng. `scatter(fn)`
+// calls fn(particle, node gi, S_gp) for every stencil entry; psize: the
+// particles' domains in cells (half-length 0.5 psize_xx along r).
 template <class Scatter>
-void node_mass_above(const NodeGrid& ng, const std::vector<double>& mass, const std::vector<Vec3>& x, Scatter&& scatter,
+void node_mass_above(const NodeGrid& ng, InterpolatorKind kind, const std::vector<double>& mass,
+                     const std::vector<Vec3>& x, const std::vector<Mat3>& psize, Scatter&& scatter,
                      std::vector<double>& m_above) {
   m_above.assign(ng.count(), 0.0);
   const std::size_t nx = std::size_t(ng.n[0]);
   scatter([&](std::size_t p, std::size_t gi, double S) {
     const double r_g = ng.origin[0] + double(gi % nx) * ng.h[0];
-    if (x[p][0] >= r_g) m_above[gi] += mass[p] * S;
+    m_above[gi] += axisymmetric_share_above(kind, (x[p][0] - r_g) / ng.h[0], 0.5 * psize[p](0, 0)) * (mass[p] * S);
   });
 }
 

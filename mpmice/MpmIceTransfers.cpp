@@ -91,7 +91,7 @@ void MpmIceComponent::solid_state_to_cells() {
     const bool axi = is.axisymmetric;  // per-radian masses: the axisymmetric node weights and V = r_c dx dy
     std::vector<double> m_above;  // m_g^+ (axisymmetric only)
     if (axi) {
-      node_mass_above(ng, p.mass, p.x, [&](auto&& fn) {
+      node_mass_above(ng, mpm_->setup().flags.interpolator.kind, p.mass, p.x, p.psize, [&](auto&& fn) {
         visit_stencils(st, [&](const auto& view) {
           for (std::size_t i = 0; i < p.size(); ++i) view.weights(i, [&](std::size_t gi, double w) { fn(i, gi, w); });
         });

@@ -140,9 +140,11 @@ void MpmIceComponent::burn_particles(std::size_t s, const CellScalars& dm, Burne
     });
   if (!mpm_->layout().any(any)) return;  // every MPI rank takes the same branch (collectives below)
   // Axisymmetric (x = r): along r a particle's share of node n goes to the
-  // node's cell on the particle's side (r_p >= r_n: the cell above), with
-  // weight 2 w_n (w_n on the axis plane), as the projection does
-  // (mpmice/CellProjection.h): W_c(x_p) = sum_{n in c, p on c's side} W_n S_np,
+  // node's cell on the particle's side (r_p >= r_n: the cell above; a
+  // particle whose domain straddles the node splits it by its share a,
+  // mpmice/AxisymmetricShare.h), with weight 2 w_n (w_n on the axis plane),
+  // as the projection does (mpmice/CellProjection.h):
+  // W_c(x_p) = sum_{n in c} W_n S_np (a if c is above n, else 1 - a),
   // so M'_c is the projected cell mass M_c (f_c <= 1 <=> dm_c <= the solid's cell mass).
   const bool axi = ice_->setup().axisymmetric;
   // The interior cells that share node gi (up to 8), with the node's weight
@@ -167,10 +169,16 @@ void MpmIceComponent::burn_particles(std::size_t s, const CellScalars& dm, Burne
   PatchBand* band = mpm_->coupling_band(1);
   if (axi && band) throw std::logic_error("MPMICE burn: axisymmetric runs have no coupling band");
   const std::size_t node_nx = std::size_t(ng.n[0]);
-  // Axisymmetric: particle i lies above node gi in r (r_p >= r_g, CellProjection.h's rule).
-  auto above = [&](std::size_t i, std::size_t gi) { return p.x[i][0] >= ng.origin[0] + double(gi % node_nx) * ng.h[0]; };
+  // Axisymmetric: particle i's share above node gi in r (CellProjection.h's
+  // rule, mpmice/AxisymmetricShare.h: 1 above, 0 below, the domain overlap
+  // where the domain straddles the node).
+  const InterpolatorKind kind = mpm_->setup().flags.interpolator.kind;
+  auto above = [&](std::size_t i, std::size_t gi) {
+    const double r_g = ng.origin[0] + double(gi % node_nx) * ng.h[0];
+    return axisymmetric_share_above(kind, (p.x[i][0] - r_g) / ng.h[0], 0.5 * p.psize[i](0, 0));
+  };
   // M'_c = sum_p m_p W_c(x_p), from the unfolded node sums m'_n = sum_p m_p S_np
-  // (axisymmetric: m'_n over the particles above the node, m_below over those below).
+  // (axisymmetric: m'_n = sum_p a m_p S_np above the node, m_below with 1 - a).
   std::vector<double> m_unfolded(ng.count(), 0.0), m_below;
   if (axi) m_below.assign(ng.count(), 0.0);
   stencil_coupling_band(band, mm.stencils);
@@ -178,10 +186,13 @@ void MpmIceComponent::burn_particles(std::size_t s, const CellScalars& dm, Burne
     for_each_coupling_particle(mm.stencils, p.size(), band, [&](std::size_t i) {
       const int P = stencil_coupling_tag(band, view, i, p.x[i]);
       view.weights(i, [&](std::size_t gi, double S) {
-        if (axi && !above(i, gi))
-          m_below[gi] += p.mass[i] * S;
-        else
+        if (axi) {  // no band in axisymmetric runs (checked above)
+          const double a = above(i, gi);
+          m_unfolded[gi] += a * (p.mass[i] * S);
+          m_below[gi] += (1.0 - a) * (p.mass[i] * S);
+        } else {
           *band_target(band, P, gi, 0, &m_unfolded[gi]) += p.mass[i] * S;
+        }
       });
     });
   });
@@ -236,8 +247,12 @@ void MpmIceComponent::burn_particles(std::size_t s, const CellScalars& dm, Burne
   // cell's share of mass (8), momentum (9-11) and energy (12).
   visit_stencils(mm.stencils, [&](const auto& view) {
     for_each_coupling_particle(mm.stencils, p.size(), band, [&](std::size_t i) {
-      // The particle's burn fraction through node gi (axisymmetric: its side's).
-      auto phi_of = [&](std::size_t gi) { return axi && !above(i, gi) ? phi_below[gi] : phi[gi]; };
+      // The particle's burn fraction through node gi (axisymmetric: its sides' by its shares).
+      auto phi_of = [&](std::size_t gi) {
+        if (!axi) return phi[gi];
+        const double a = above(i, gi);
+        return a * phi[gi] + (1.0 - a) * phi_below[gi];
+      };
       double a = 0;
       view.weights(i, [&](std::size_t gi, double S) { a += S * phi_of(gi); });
       if (!(a > 0)) return;
@@ -250,10 +265,11 @@ void MpmIceComponent::burn_particles(std::size_t s, const CellScalars& dm, Burne
       const double e = cv * p.temperature[i];
       view.weights(i, [&](std::size_t gi, double S) {
         if (!(phi_of(gi) > 0)) return;
-        const bool p_above = !axi || above(i, gi);
+        const double a = axi ? above(i, gi) : 1.0;
         for_node_cells(gi, [&](std::size_t c, double w, std::size_t corner, bool up) {
-          if (!(f[c] > 0) || (axi && up != p_above)) return;
-          const double share = scale * S * w * f[c];
+          const double side = !axi ? 1.0 : up ? a : 1.0 - a;  // the particle's share on c's side of the node
+          if (!(f[c] > 0) || side == 0.0) return;
+          const double share = scale * S * w * f[c] * side;
           *band_target(band, P, corner, 8, &cell_mass[c]) += share;
           Eigen::Map<Vec3>(band_target(band, P, corner, 9, cell_mom[c].data())) += share * v;
           *band_target(band, P, corner, 12, &cell_energy[c]) += share * e;

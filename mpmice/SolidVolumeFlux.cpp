@@ -84,12 +84,13 @@ struct AxisFactors {
   // m_g += m_i S_gp for particle i, its nodes x fastest (the order of
   // visit_stencils, so the same sums); at(gi) the entry to add to
   // (mpmice/BandScatter.h: the node, or a band partial). m_above
-  // (axisymmetric, when given, with x the particle's position): the part
-  // from the particles with x_p >= the node's x (node_mass_above,
-  // mpmice/CellProjection.h), m_above indexed by node.
+  // (axisymmetric, when given, with x the particle's position and
+  // half_length its domain's half-length along x in cells): the part above
+  // the node (node_mass_above, mpmice/CellProjection.h), m_above indexed by node.
   template <int NN, class At>
   void scatter_mass(std::size_t i, double mass, const NodeGrid& sg, At&& at, const Vec3* x = nullptr,
-                    double* m_above = nullptr) const {
+                    double* m_above = nullptr, InterpolatorKind kind = InterpolatorKind::Linear,
+                    double half_length = 0.0) const {
     const std::size_t sy = std::size_t(sg.n[0]), sz = std::size_t(sg.n[0]) * std::size_t(sg.n[1]);
     const double* X = S[0].data() + i * NN;
     const double* Y = S[1].data() + i * NN;
@@ -100,10 +101,11 @@ struct AxisFactors {
         const std::size_t row = base + sy * std::size_t(b) + sz * std::size_t(c);
         const double y = Y[b], z = Z[c];
         for (int a = 0; a < NN; ++a) *at(row + std::size_t(a)) += mass * (X[a] * y * z);
-        if (m_above)
-          for (int a = 0; a < NN; ++a)
-            if ((*x)[0] >= sg.origin[0] + (first[0][i] + a) * sg.h[0])
-              m_above[row + std::size_t(a)] += mass * (X[a] * y * z);
+        if (m_above)  // the share above each node (mpmice/AxisymmetricShare.h)
+          for (int a = 0; a < NN; ++a) {
+            const double t = ((*x)[0] - (sg.origin[0] + (first[0][i] + a) * sg.h[0])) / sg.h[0];
+            m_above[row + std::size_t(a)] += axisymmetric_share_above(kind, t, half_length) * (mass * (X[a] * y * z));
+          }
       }
   }
 };
@@ -254,7 +256,7 @@ void MpmIceComponent::solid_mass_fluxes(double dt) {
       });
       fold_symmetry_scalar(mm.bcs, sg, node_mass);
       if (axi) {
-        node_mass_above(sg, p.mass, q.x, [&](auto&& fn) {
+        node_mass_above(sg, spec.kind, p.mass, q.x, q.psize, [&](auto&& fn) {
           visit_stencils(st, [&](const auto& view) {
             for (std::size_t i = 0; i < q.size(); ++i) view.weights(i, [&](std::size_t gi, double w) { fn(i, gi, w); });
           });
@@ -274,8 +276,11 @@ void MpmIceComponent::solid_mass_fluxes(double dt) {
       if (!(fac.N && axis_ok[0] && axis_ok[1] && axis_ok[2])) return project_general(M);
       if (axi) node_above.assign(sg.count(), 0.0);
       double* above = axi ? node_above.data() : nullptr;
-      if (fac.N == 2) scatter([&](std::size_t i, auto&& at) { fac.scatter_mass<2>(i, p.mass[i], sg, at, &q.x[i], above); });
-      else scatter([&](std::size_t i, auto&& at) { fac.scatter_mass<3>(i, p.mass[i], sg, at, &q.x[i], above); });
+      auto half = [&](std::size_t i) { return 0.5 * q.psize[i](0, 0); };
+      if (fac.N == 2)
+        scatter([&](std::size_t i, auto&& at) { fac.scatter_mass<2>(i, p.mass[i], sg, at, &q.x[i], above, spec.kind, half(i)); });
+      else
+        scatter([&](std::size_t i, auto&& at) { fac.scatter_mass<3>(i, p.mass[i], sg, at, &q.x[i], above, spec.kind, half(i)); });
       fold_symmetry_scalar(mm.bcs, sg, node_mass);
       if (axi) fold_symmetry_scalar(mm.bcs, sg, node_above);
       nodes_to_cells(M);

@@ -5,7 +5,7 @@ run through `tephra`: mean container pressure and burned PBX mass against
 time, and the first rupture of the steel container (time and place).
 
 Usage:
-  tests/bench/cookoff2d.py BUILD_DIR run     [OUT] [--end-time T] [--refine K] [--stability TYPE | --no-stability]
+  tests/bench/cookoff2d.py BUILD_DIR run     [OUT] [--axisym] [--end-time T] [--refine K] [--stability TYPE | --no-stability]
   tests/bench/cookoff2d.py BUILD_DIR analyse [OUT] [--png-dir DIR]
   tests/bench/cookoff2d.py selftest
 (run: the deck, or with --refine K the deck with K x K times more cells in
@@ -18,6 +18,13 @@ DIR/cookoff2d-burned.png, DIR/cookoff2d-failed.png, DIR/cookoff2d-map.png
 (the steel at the last output, failed particles red) and DIR/cookoff2d.csv; DIR
 defaults to OUT. selftest: the rupture-detection rules on hand-made
 lattices; exit 0 when they hold (ctest runs it).)
+--axisym (session 24): run inputs/validation/cookoff_axisym.ups instead (the
+same section made axisymmetric, x = r, y = z); analyse recognises an
+axisymmetric run from its input.ups (<axisymmetric>true), reports masses per
+radian (x 2 pi for the whole container) and names its files cookoff_axisym*
+(cookoff_axisym.csv, cookoff_axisym-pressure.png, ...). The rupture rules
+are the same on the (r, z) lattice: the side wall is then the cylinder's
+hoop-loaded mantle (mid-length at z = 0), the end cap a disc.
 
 Geometry (the deck's header): planar section through the axis, x radial,
 y axial, quarter with symmetry at x = 0 and y = 0; inner half-sizes
@@ -59,6 +66,7 @@ sys.path.insert(0, HERE)
 
 ROOT = os.path.normpath(os.path.join(HERE, "..", ".."))
 DECK = os.path.join(ROOT, "inputs", "validation", "cookoff2d.ups")
+DECK_AXI = os.path.join(ROOT, "inputs", "validation", "cookoff_axisym.ups")
 R_I, R_O = 0.0508, 0.05715   # side wall: inner / outer radius [m]
 L_I, L_O = 0.0508, 0.05715   # end cap: inner / outer half-length [m]
 H0 = 1.27e-3                 # the deck's cell size
@@ -138,6 +146,12 @@ def deck_cell_size(out):
     return (num("upper")[0] - num("lower")[0]) / num("resolution")[0]
 
 
+def deck_is_axisymmetric(out):
+    """Whether the run's deck copy has <MPM><axisymmetric>true."""
+    text = open(os.path.join(out, "input.ups")).read()
+    return re.search(r"<axisymmetric>\s*true\s*</axisymmetric>", text) is not None
+
+
 def by_time(rows):
     series = {}
     for r in rows:
@@ -150,6 +164,11 @@ def by_time(rows):
 def analyse(tephra, out, png_dir):
     h = deck_cell_size(out)
     s = 0.5 * h
+    axi = deck_is_axisymmetric(out)
+    # Mass unit of the burned column: per metre of depth (planar slab, one
+    # cell h thick) or per radian (axisymmetric: the particles' masses).
+    per = 1.0 if axi else h
+    unit = "kg/rad" if axi else "kg/m"
     steel = by_time(extract(tephra, out, "p.localized", 0))
     damage = {(float(r["time"]), r["particle_id"]): float(r["p.damage"])
               for r in extract(tephra, out, "p.damage", 0)}
@@ -189,12 +208,16 @@ def analyse(tephra, out, png_dir):
         wall_u.append((sum(u_side) / max(len(u_side), 1), sum(u_cap) / max(len(u_cap), 1)))
         hist.append((t, p_mean, p_max, burned, len(failed), counts, len(cracks)))
 
-    print(f"# {out}: h = {h * 1e3:.4g} mm, {len(ref)} steel particles, PBX {m0:.6g} kg "
-          f"({m0 / h:.6g} kg per metre of depth), {len(times)} outputs to t = {times[-1] * 1e3:.4g} ms")
-    print("# t[ms]  p_mean[MPa]  p_max[MPa]  burned[kg/m]  burned/PBX  failed(side,cap,corner)  cracks"
+    if axi:
+        print(f"# {out} (axisymmetric): h = {h * 1e3:.4g} mm, {len(ref)} steel particles, PBX {m0:.6g} kg/rad "
+              f"({2 * math.pi * m0:.6g} kg in the half container), {len(times)} outputs to t = {times[-1] * 1e3:.4g} ms")
+    else:
+        print(f"# {out}: h = {h * 1e3:.4g} mm, {len(ref)} steel particles, PBX {m0:.6g} kg "
+              f"({m0 / h:.6g} kg per metre of depth), {len(times)} outputs to t = {times[-1] * 1e3:.4g} ms")
+    print(f"# t[ms]  p_mean[MPa]  p_max[MPa]  burned[{unit}]  burned/PBX  failed(side,cap,corner)  cracks"
           "  u_side_mid[mm]  u_cap_centre[mm]")
     for (t, pm, px, b, n, c, nc), (us, uc) in zip(hist, wall_u):
-        print(f"{t * 1e3:7.4f} {pm / 1e6:11.4g} {px / 1e6:11.4g} {b / h:12.5g} {b / m0:10.4g}  "
+        print(f"{t * 1e3:7.4f} {pm / 1e6:11.4g} {px / 1e6:11.4g} {b / per:12.5g} {b / m0:10.4g}  "
               f"{n:5d} ({c['side wall']},{c['end cap']},{c['corner']})  {nc}  {us * 1e3:8.4g} {uc * 1e3:8.4g}")
     if first is None:
         print("first failure: none in the run")
@@ -205,7 +228,7 @@ def analyse(tephra, out, png_dir):
             D, phi = damage.get((t, pid), float("nan")), porosity.get((t, pid), float("nan"))
             tepla = (phi / 0.3) ** 2 + D ** 2
             print(f"  id {pid}: {place(X, Y)} ({corner_distance(X, Y) * 1e3:.2f} mm from the inner corner), "
-                  f"reference (x, y) = ({X * 1e3:.3f}, {Y * 1e3:.3f}) mm, "
+                  f"reference ({'r, z' if axi else 'x, y'}) = ({X * 1e3:.3f}, {Y * 1e3:.3f}) mm, "
                   f"D = {D:.4g}, phi = {phi:.4g}, TEPLA (phi/0.3)^2 + D^2 = {tepla:.4g}")
     if first_crack is None:
         print("through-wall crack: none in the run")
@@ -213,25 +236,28 @@ def analyse(tephra, out, png_dir):
         t, cracks = first_crack
         for n, (X, Y) in cracks:
             print(f"through-wall crack: t = {t * 1e3:.4g} ms, {n} failed particles, "
-                  f"mean reference (x, y) = ({X * 1e3:.2f}, {Y * 1e3:.2f}) mm: {place(X, Y)}")
+                  f"mean reference ({'r, z' if axi else 'x, y'}) = ({X * 1e3:.2f}, {Y * 1e3:.2f}) mm: {place(X, Y)}")
     for name in ("corner", "side wall", "end cap"):
         for what, d in (("first failed particle", first_in), ("first through-wall crack", crack_in)):
             if name in d:
                 t, X, Y = d[name]
-                print(f"{name:9s}: {what} at t = {t * 1e3:.4g} ms, reference (x, y) = ({X * 1e3:.2f}, {Y * 1e3:.2f}) mm, "
+                print(f"{name:9s}: {what} at t = {t * 1e3:.4g} ms, reference ({'r, z' if axi else 'x, y'}) = "
+                      f"({X * 1e3:.2f}, {Y * 1e3:.2f}) mm, "
                       f"{corner_distance(X, Y) * 1e3:.2f} mm from the inner corner")
             else:
                 print(f"{name:9s}: {what}: none")
-    write_outputs(hist, h, m0, png_dir, steel[times[-1]], ref)
+    write_outputs(hist, per, m0, png_dir, steel[times[-1]], ref, "cookoff_axisym" if axi else "cookoff2d", axi)
     return hist, first, first_crack
 
 
-def write_outputs(hist, h, m0, png_dir, last_rows, ref):
+def write_outputs(hist, h, m0, png_dir, last_rows, ref, stem="cookoff2d", axi=False):
+    """h: the burned column's divisor (the slab depth, or 1 for per radian)."""
     from jwlppcurs2d import plot_series
     from rate_stick_size_effect import write_png, FONT
     os.makedirs(png_dir, exist_ok=True)
-    with open(os.path.join(png_dir, "cookoff2d.csv"), "w") as f:
-        f.write("t_s,p_mean_Pa,p_max_Pa,burned_kg_per_m,burned_fraction,failed,failed_side,failed_cap,failed_corner,cracks\n")
+    with open(os.path.join(png_dir, f"{stem}.csv"), "w") as f:
+        f.write(f"t_s,p_mean_Pa,p_max_Pa,burned_kg_per_{'rad' if axi else 'm'},burned_fraction,failed,failed_side,"
+                "failed_cap,failed_corner,cracks\n")
         for t, pm, px, b, n, c, nc in hist:
             f.write(f"{t:.6e},{pm:.6e},{px:.6e},{b / h:.6e},{b / m0:.6e},{n},{c['side wall']},"
                     f"{c['end cap']},{c['corner']},{nc}\n")
@@ -242,19 +268,20 @@ def write_outputs(hist, h, m0, png_dir, last_rows, ref):
         k = 10 ** math.floor(math.log10(v))
         return next(m * k for m in (1, 2, 5, 10) if m * k >= v)
     top = nice_top(max([px for _, _, px, *_ in hist if px == px] + [1e-3]) / 1e6)
-    plot_series(os.path.join(png_dir, "cookoff2d-pressure.png"),
+    plot_series(os.path.join(png_dir, f"{stem}-pressure.png"),
                 [([(t * 1e3, pm / 1e6) for t, pm, *_ in hist], (200, 30, 30)),
                  ([(t * 1e3, px / 1e6) for t, _, px, *_ in hist], (30, 30, 200))],
                 (0, xt[-1]), (0, top), xt, [top * k / 5 for k in range(6)],
                 "T [MS]", "PRESSURE INSIDE THE CONTAINER [MPA]",
                 [("MEAN OVER THE INNER BOX", (200, 30, 30)), ("LARGEST CELL", (30, 30, 200))])
     btop = nice_top(max([b / h * 1e3 for _, _, _, b, *_ in hist] + [1e-6]))
-    plot_series(os.path.join(png_dir, "cookoff2d-burned.png"),
+    plot_series(os.path.join(png_dir, f"{stem}-burned.png"),
                 [([(t * 1e3, b / h * 1e3) for t, _, _, b, *_ in hist], (30, 30, 200))],
                 (0, xt[-1]), (0, btop), xt, [btop * k / 5 for k in range(6)],
-                "T [MS]", "BURNED PBX [G PER M OF DEPTH]", [("QUARTER SECTION", (30, 30, 200))])
+                "T [MS]", "BURNED PBX [G PER RADIAN]" if axi else "BURNED PBX [G PER M OF DEPTH]",
+                [("HALF CONTAINER" if axi else "QUARTER SECTION", (30, 30, 200))])
     nmax = max([n for *_, n, _, _ in hist] + [1])
-    plot_series(os.path.join(png_dir, "cookoff2d-failed.png"),
+    plot_series(os.path.join(png_dir, f"{stem}-failed.png"),
                 [([(t * 1e3, c["side wall"]) for t, *_, c, _ in hist], (30, 30, 200)),
                  ([(t * 1e3, c["end cap"]) for t, *_, c, _ in hist], (200, 30, 30)),
                  ([(t * 1e3, c["corner"]) for t, *_, c, _ in hist], (30, 150, 30))],
@@ -274,7 +301,7 @@ def write_outputs(hist, h, m0, png_dir, last_rows, ref):
                 if 0 <= i + di < W and 0 <= j + dj < H:
                     k = ((j + dj) * W + i + di) * 3
                     px[k:k + 3] = bytes(c)
-    write_png(os.path.join(png_dir, "cookoff2d-map.png"), W, H, px)
+    write_png(os.path.join(png_dir, f"{stem}-map.png"), W, H, px)
 
 
 # ---------------------------------------------------------------- self-test
@@ -332,6 +359,9 @@ def main():
     build, mode = sys.argv[1], sys.argv[2]
     args = list(sys.argv[3:])
     opts = {}
+    axisym = "--axisym" in args
+    if axisym:
+        args.remove("--axisym")
     if "--no-stability" in args:
         args.remove("--no-stability")
         opts["--stability"] = "none"
@@ -345,7 +375,7 @@ def main():
     if mode == "run":
         os.makedirs(out, exist_ok=True)
         k = int(opts.get("--refine", "1"))
-        text = open(DECK).read()
+        text = open(DECK_AXI if axisym else DECK).read()
         if k != 1:
             n = 52 * k
             text = text.replace("[ 52, 52, 1]", f"[ {n}, {n}, 1]")
@@ -357,6 +387,8 @@ def main():
                                 f'<stability_check     type="{opts["--stability"]}"/>')
             assert text != before, "stability_check not found in the deck"
         deck = os.path.join(out, "deck.ups")
+        if axisym and "--end-time" in opts:  # the deck's maxTime bounds the run: raise it to the end time
+            text = re.sub(r"<maxTime>[^<]*</maxTime>", f"<maxTime> {opts['--end-time']} </maxTime>", text)
         open(deck, "w").write(text)
         cmd = [tephra, deck, "--output", out, "--threads", "1"]
         if "--end-time" in opts:
