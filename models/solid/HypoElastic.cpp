@@ -7,7 +7,6 @@
 
 #include "models/ModelParameters.h"
 #include "models/solid/Kinematics.h"
-#include "models/solid/PolarCache.h"
 #include "models/solid/PolarNewton.h"
 #include "models/solid/PointLoop.h"
 
@@ -29,13 +28,13 @@ struct HypoElasticConstants {
         K_4G3(p.K + 4.0 * p.G / 3.0) {}
 };
 
-// hypo_elastic_point with the constants, J = det F_new and the polar
-// decompositions a of F_old and b of F_new given (Newton, PolarNewton.h: the
-// eigen-solve result to round-off, faster; update() takes a from PolarCache.h).
-inline SolidPointResult hypo_elastic_point_with(const PolarDecomposition& a, const PolarDecomposition& b,
+// hypo_elastic_point with the constants and J = det F_new given.
+inline SolidPointResult hypo_elastic_point_with(const Eigen::Matrix3d& F_old, const Eigen::Matrix3d& F_new,
                                                 const Eigen::Matrix3d& stress_old, double density0,
                                                 const HypoElasticConstants& c, double thermal_strain, double J) {
   const Eigen::Matrix3d I = Eigen::Matrix3d::Identity();
+  // Newton polar decomposition (PolarNewton.h): the eigen-solve result to round-off, faster.
+  const PolarDecomposition a = polar_decomposition_newton(F_old), b = polar_decomposition_newton(F_new);
   // Unrotated strain increment: midpoint rule for d_hat = sym(U_dot U^{-1}).
   const Eigen::Matrix3d G = (b.U - a.U) * (0.5 * (a.U + b.U)).inverse();
   // Mechanical part: minus the thermal strain increment alpha (T_{n+1} - T_n) I (header).
@@ -57,22 +56,17 @@ inline SolidPointResult hypo_elastic_point_with(const PolarDecomposition& a, con
 SolidPointResult hypo_elastic_point(const Eigen::Matrix3d& F_old, const Eigen::Matrix3d& F_new,
                                     const Eigen::Matrix3d& stress_old, double density0,
                                     const HypoElasticParams& p, double thermal_strain) {
-  return hypo_elastic_point_with(polar_decomposition_newton(F_old), polar_decomposition_newton(F_new), stress_old,
-                                 density0, HypoElasticConstants(p), thermal_strain, F_new.determinant());
+  return hypo_elastic_point_with(F_old, F_new, stress_old, density0, HypoElasticConstants(p), thermal_strain,
+                                 F_new.determinant());
 }
 
 std::vector<HistoryVariable> HypoElastic::history() const {
-  std::vector<HistoryVariable> h;
-  if (p_.alpha != 0.0)
-    h.push_back({"lastTemperature", 1, {0.0}, "temperature of the last update (thermal strain alpha (T - T_last)) [K]"});
-  for (HistoryVariable& v : polar_cache_history()) h.push_back(std::move(v));  // after lastTemperature (update())
-  return h;
+  if (p_.alpha == 0.0) return {};
+  return {{"lastTemperature", 1, {0.0}, "temperature of the last update (thermal strain alpha (T - T_last)) [K]"}};
 }
 
 long HypoElastic::update(const SolidUpdateInput& in, const SolidUpdateOutput& out) const {
   const HypoElasticConstants constants(p_);
-  // R_n from the previous step's R_{n+1} (PolarCache.h: the same bits as decomposing F_n).
-  const PolarCache polar(out.history, p_.alpha != 0.0 ? 1 : 0, in.F_new.size());
   return for_each_point(in.F_new.size(), [&](size_t i) {
     const double J0 = in.F_old[i].determinant(), J = in.F_new[i].determinant();
     if (!(J0 > 0.0) || !(J > 0.0) || !std::isfinite(J) || !std::isfinite(J0)) return false;
@@ -85,9 +79,8 @@ long HypoElastic::update(const SolidUpdateInput& in, const SolidUpdateOutput& ou
       thermal_strain = p_.alpha * (T - T_last);
       T_last = T;
     }
-    const PolarDecomposition a = polar.decompose_old(i, in.F_old[i]);
-    const PolarDecomposition b = polar.decompose_new(i, in.F_new[i]);
-    const SolidPointResult r = hypo_elastic_point_with(a, b, in.stress_old[i], in.density0, constants, thermal_strain, J);
+    const SolidPointResult r = hypo_elastic_point_with(in.F_old[i], in.F_new[i], in.stress_old[i], in.density0,
+                                                       constants, thermal_strain, J);
     if (!r.stress.allFinite()) return false;
     out.stress[i] = r.stress;
     out.wave_speed[i] = r.wave_speed;

@@ -6,12 +6,12 @@
 
 namespace tephra {
 
-bool polar_rotation_newton(const Eigen::Matrix3d& F, Eigen::Matrix3d& R) {
+PolarDecomposition polar_decomposition_newton(const Eigen::Matrix3d& F) {
   Eigen::Matrix3d X = F;
   bool scale = true;
   for (int k = 0; k < 40; ++k) {
     const double det = X.determinant();
-    if (!(std::abs(det) > 0.0) || !std::isfinite(det)) return false;
+    if (!(std::abs(det) > 0.0) || !std::isfinite(det)) break;
     // Scaling speeds up the first steps only; near convergence zeta -> 1.
     // zeta ~ 1 when |det X| ~ 1 (the mean stretch is 1): no cube root then.
     const double zeta = scale && std::abs(std::abs(det) - 1.0) > 1e-3 ? std::cbrt(1.0 / std::abs(det)) : 1.0;
@@ -30,24 +30,13 @@ bool polar_rotation_newton(const Eigen::Matrix3d& F, Eigen::Matrix3d& R) {
     // Quadratic convergence: the error after this step is O(change^2),
     // below round-off once change < 1e-9.
     if (change < 1e-9) {
-      R = X;
-      return true;
+      PolarDecomposition pd;
+      pd.R = X;
+      const Eigen::Matrix3d RtF = X.transpose() * F;
+      pd.U = 0.5 * (RtF + RtF.transpose());
+      return pd;
     }
   }
-  return false;
-}
-
-PolarDecomposition polar_with_rotation(const Eigen::Matrix3d& R, const Eigen::Matrix3d& F) {
-  PolarDecomposition pd;
-  pd.R = R;
-  const Eigen::Matrix3d RtF = R.transpose() * F;
-  pd.U = 0.5 * (RtF + RtF.transpose());
-  return pd;
-}
-
-PolarDecomposition polar_decomposition_newton(const Eigen::Matrix3d& F) {
-  Eigen::Matrix3d R;
-  if (polar_rotation_newton(F, R)) return polar_with_rotation(R, F);
   return polar_decomposition(F);
 }
 

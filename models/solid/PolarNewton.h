@@ -17,14 +17,4 @@ namespace tephra {
 
 PolarDecomposition polar_decomposition_newton(const Eigen::Matrix3d& F);
 
-// The two halves of polar_decomposition_newton (which is
-// polar_with_rotation(R, F) when polar_rotation_newton(F, R) returns true,
-// polar_decomposition(F) otherwise), for callers that keep R
-// (PolarCache.h): the same operations, so the same bits.
-// R of F by the iteration above; false (R untouched) when det X_k is zero or
-// not finite or the iteration has not converged in 40 steps.
-bool polar_rotation_newton(const Eigen::Matrix3d& F, Eigen::Matrix3d& R);
-// {R, U = sym(R^T F)}: the stretch the iteration forms from its R.
-PolarDecomposition polar_with_rotation(const Eigen::Matrix3d& R, const Eigen::Matrix3d& F);
-
 }  // namespace tephra
