@@ -14,6 +14,7 @@
 // ShapeLinear.h hold.
 #include <cmath>
 
+#include "mpm/shape/FloorIndex.h"
 #include "mpm/shape/ShapeAxis.h"
 
 namespace tephra {
@@ -34,7 +35,7 @@ inline void quadratic_bspline_1d(double d, double& S, double& dS) {
 
 inline ShapeAxis quadratic_bspline_axis(double xi) {
   ShapeAxis a;
-  a.first = static_cast<int>(std::floor(xi + 0.5)) - 1;
+  a.first = floor_index(xi + 0.5) - 1;  // = (int)std::floor(xi + 0.5) - 1 (FloorIndex.h)
   a.count = 3;
   for (int k = 0; k < 3; ++k) quadratic_bspline_1d(xi - (a.first + k), a.S[k], a.dS[k]);
   return a;

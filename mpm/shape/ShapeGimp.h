@@ -18,6 +18,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "mpm/shape/FloorIndex.h"
 #include "mpm/shape/ShapeAxis.h"
 
 namespace tephra {
@@ -48,7 +49,7 @@ inline void gimp_1d(double d, double l, double& S, double& dS) {
 // The three nodes around xi; l = half-length in index units, 0 < l <= 1/2.
 inline ShapeAxis gimp_axis(double xi, double l) {
   ShapeAxis a;
-  a.first = static_cast<int>(std::floor(xi + 0.5)) - 1;
+  a.first = floor_index(xi + 0.5) - 1;  // = (int)std::floor(xi + 0.5) - 1 (FloorIndex.h)
   a.count = 3;
   for (int k = 0; k < 3; ++k) gimp_1d(xi - (a.first + k), l, a.S[k], a.dS[k]);
   return a;
@@ -73,9 +74,10 @@ inline double hat_1d(double s) { return std::max(0.0, 1.0 - std::abs(s)); }
 inline ShapeAxis gimp_axis_any(double xi, double l) {
   ShapeAxis a;
   // Nodes i with |xi - i| < 1 + l: floor(xi - l) .. floor(xi + l) + 1 (<= 4 for l <= 1).
-  a.first = static_cast<int>(std::floor(xi - l));
+  a.first = floor_index(xi - l);  // (int)std::floor (FloorIndex.h)
   a.count = 0;
-  for (int i = a.first; i <= static_cast<int>(std::floor(xi + l)) + 1 && a.count < 4; ++i) {
+  const int last = floor_index(xi + l) + 1;
+  for (int i = a.first; i <= last && a.count < 4; ++i) {
     const double d = xi - i;
     a.S[a.count] = (hat_integral(d + l) - hat_integral(d - l)) / (2.0 * l);
     a.dS[a.count] = (hat_1d(d + l) - hat_1d(d - l)) / (2.0 * l);

@@ -7,15 +7,16 @@
 // sum x_g (grad S_g)^T = I.
 #include <cmath>
 
+#include "mpm/shape/FloorIndex.h"
 #include "mpm/shape/ShapeAxis.h"
 
 namespace tephra {
 
 inline ShapeAxis linear_axis(double xi) {
   ShapeAxis a;
-  const double c = std::floor(xi);
+  a.first = floor_index(xi);
+  const double c = floor_value(xi, a.first);  // std::floor(xi), the same bits (FloorIndex.h)
   const double r = xi - c;  // local coordinate in [0,1)
-  a.first = static_cast<int>(c);
   a.count = 2;
   a.S[0] = 1.0 - r;
   a.S[1] = r;
