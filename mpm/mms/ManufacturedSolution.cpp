@@ -21,7 +21,8 @@ double youngs_modulus(const CnhMmsParams& m) {
 
 class AxisAligned final : public ManufacturedSolution {
  public:
-  AxisAligned(const CnhMmsParams& m, double rho0) : m_(m), rho0_(rho0), c_(std::sqrt(youngs_modulus(m) / rho0)) {}
+  AxisAligned(const CnhMmsParams& m, double rho0, double amplitude)
+      : amplitude_(amplitude), m_(m), rho0_(rho0), c_(std::sqrt(youngs_modulus(m) / rho0)) {}
   std::string name() const override { return "AxisAligned"; }
 
   // sin(c pi t + phi_i), phi = (0, 2 pi/3, 4 pi/3)
@@ -29,18 +30,18 @@ class AxisAligned final : public ManufacturedSolution {
 
   Vec3 displacement(const Vec3& X, double t) const override {
     Vec3 u;
-    for (int i = 0; i < 3; ++i) u[i] = kA * std::sin(kPi * X[i]) * phase(i, t);
+    for (int i = 0; i < 3; ++i) u[i] = amplitude_ * std::sin(kPi * X[i]) * phase(i, t);
     return u;
   }
   Vec3 velocity(const Vec3& X, double t) const override {
     Vec3 v;
     for (int i = 0; i < 3; ++i)
-      v[i] = kA * c_ * kPi * std::sin(kPi * X[i]) * std::cos(c_ * kPi * t + i * 2.0 * kPi / 3.0);
+      v[i] = amplitude_ * c_ * kPi * std::sin(kPi * X[i]) * std::cos(c_ * kPi * t + i * 2.0 * kPi / 3.0);
     return v;
   }
   Mat3 deformation_gradient(const Vec3& X, double t) const override {
     Mat3 F = Mat3::Zero();
-    for (int i = 0; i < 3; ++i) F(i, i) = 1.0 + kA * kPi * std::cos(kPi * X[i]) * phase(i, t);
+    for (int i = 0; i < 3; ++i) F(i, i) = 1.0 + amplitude_ * kPi * std::cos(kPi * X[i]) * phase(i, t);
     return F;
   }
   Vec3 body_force(const Vec3& X, double t) const override {
@@ -56,7 +57,7 @@ class AxisAligned final : public ManufacturedSolution {
   }
 
  private:
-  static constexpr double kA = 0.05;
+  const double amplitude_;  // A [m]: Vaango's 0.05 (make_mms); other values only from tests
   CnhMmsParams m_;
   double rho0_, c_;
 };
@@ -125,8 +126,9 @@ class GeneralizedVortex final : public ManufacturedSolution {
 
 }  // namespace
 
-std::unique_ptr<ManufacturedSolution> make_axis_aligned_mms(const CnhMmsParams& model, double rho0) {
-  return std::make_unique<AxisAligned>(model, rho0);
+std::unique_ptr<ManufacturedSolution> make_axis_aligned_mms(const CnhMmsParams& model, double rho0,
+                                                            double amplitude) {
+  return std::make_unique<AxisAligned>(model, rho0, amplitude);
 }
 std::unique_ptr<ManufacturedSolution> make_generalized_vortex_mms(const CnhMmsParams& model, double rho0) {
   return std::make_unique<GeneralizedVortex>(model, rho0);

@@ -37,7 +37,11 @@ class ManufacturedSolution {
 // F_ii' = -pi^2 u_i, and d2u_i/dt2 = -(c pi)^2 u_i.) Vaango hard-codes K =
 // 8333.33, mu = 3846.15, rho0 = 1; Tephra takes K, mu, rho0 from the deck so
 // that the body force matches the stress the run computes.
-std::unique_ptr<ManufacturedSolution> make_axis_aligned_mms(const CnhMmsParams& model, double rho0);
+// `amplitude` is A; decks get Vaango's 0.05 (make_mms). Other values are for
+// the amplitude split of docs/mpm-convergence.md (session 24): the error part
+// linear in A (small strain) against the part from the large strain.
+std::unique_ptr<ManufacturedSolution> make_axis_aligned_mms(const CnhMmsParams& model, double rho0,
+                                                            double amplitude = 0.05);
 
 // GeneralizedVortex (Vaango initGeneralizedVortex / extForceGeneralizedVortex;
 // Kamojjala et al.), an isochoric rotation of each circle R = |(X, Y)| about z:

@@ -36,6 +36,8 @@ int main(int argc, char** argv) {
   o.timestep_multiplier = argc > 3 ? std::atof(argv[3]) : 0.0;
   // TEPHRA_MMS_PERIODIC_MIRROR=1: AxisAligned on [-1, 1]^3, periodic, no faces (MmsRunOptions::periodic_mirror).
   o.periodic_mirror = std::getenv("TEPHRA_MMS_PERIODIC_MIRROR") != nullptr;
+  // TEPHRA_MMS_AMPLITUDE=A: AxisAligned with amplitude A instead of Vaango's 0.05 (MmsRunOptions::amplitude).
+  if (const char* a = std::getenv("TEPHRA_MMS_AMPLITUDE")) o.amplitude = std::atof(a);
   const auto interps = split(argc > 4 ? argv[4] : "linear,gimp,cpdi,3rdorderBS");
   const auto cells = split(argc > 5 ? argv[5] : "8,16,32");
   std::FILE* csv = std::fopen("mms_work_precision.csv", "w");

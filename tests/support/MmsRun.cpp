@@ -11,6 +11,8 @@
 #include "core/deck/DeckLoader.h"
 #include "core/deck/DeckNode.h"
 #include "mpm/MpmComponent.h"
+#include "mpm/mms/ManufacturedSolution.h"
+#include "models/solid/CnhMms.h"
 #include "tests/support/TestPaths.h"
 
 namespace tephra::test {
@@ -156,6 +158,13 @@ MmsRunResult run_axis_aligned(const MmsRunOptions& o) {
 
   const auto start = std::chrono::steady_clock::now();
   auto comp = make_mpm_component(*deck);
+  if (o.amplitude > 0.0) {  // before initialize(): the start state and the deformed size use it
+    MpmMaterial& m = comp->materials()[0];
+    const auto* cnh = dynamic_cast<const CnhMms*>(m.model.get());
+    if (!cnh || !m.mms || m.mms->name() != "AxisAligned")
+      throw std::runtime_error("MmsRunOptions::amplitude: AxisAligned with cnh_mms only");
+    m.mms = make_axis_aligned_mms(cnh->params(), m.density, o.amplitude);
+  }
   comp->initialize();
   MmsRunResult out;
   if (o.conforming_ring)
@@ -178,6 +187,18 @@ MmsRunResult run_axis_aligned(const MmsRunOptions& o) {
     }
   }
   out.error = comp->mms_displacement_error();
+  if (o.keep_particle_errors) {
+    const auto& m = comp->materials()[0];
+    out.particle_errors.assign(m.particles.size(), Vec3::Zero());
+    out.particle_X.assign(m.particles.size(), Vec3::Zero());
+    for (std::size_t i = 0; i < m.particles.size(); ++i) {
+      const std::size_t id = std::size_t(m.particles.id[i]);
+      if (id >= m.particles.size()) throw std::runtime_error("keep_particle_errors: particle ids are not 0..n-1");
+      const Vec3 X = m.particles.x[i] - m.particles.displacement[i];
+      out.particle_errors[id] = m.particles.displacement[i] - m.mms->displacement(X, t);
+      out.particle_X[id] = X;
+    }
+  }
   if (std::getenv("TEPHRA_MMS_BANDS")) {
     const auto& m = comp->materials()[0];
     double num[4] = {0, 0, 0, 0}, cnt[4] = {0, 0, 0, 0};

@@ -7,6 +7,9 @@
 // time. Used by tests/verification/test_mpm_mms.cpp and
 // tests/bench/bench_mms_work_precision.cpp.
 #include <string>
+#include <vector>
+
+#include "core/base/Types.h"
 
 namespace tephra::test {
 
@@ -44,6 +47,11 @@ struct MmsRunOptions {
   // is odd about X_i = 0 and 1, so this is the problem the symmetry faces
   // stand for, with no face at all.
   bool periodic_mirror = false;
+  // AxisAligned only: the amplitude A [m] of u_i = A sin(pi X_i) sin(...);
+  // 0: Vaango's 0.05 (the deck). |F_ii - 1| <= A pi.
+  double amplitude = 0.0;
+  // Fill MmsRunResult::particle_errors (u_p - u(X_p, t) at the end, by particle id).
+  bool keep_particle_errors = false;
 };
 
 struct MmsRunResult {
@@ -54,6 +62,11 @@ struct MmsRunResult {
   double band_rms[4] = {0, 0, 0, 0};  // with ring_outer > 0: see MmsRunOptions
   long band_count[4] = {0, 0, 0, 0};
   double volume0 = 0.0;  // sum of the particles' reference volumes V0 [m^3]
+  // With MmsRunOptions::keep_particle_errors: the end error u_p - u(X_p, t)
+  // and the reference position X_p = x_p - u_p, indexed by particle id (the
+  // seeding gives ids 0..n-1 in the same order for every amplitude and
+  // interpolator, so two runs' errors can be subtracted particle by particle).
+  std::vector<Vec3> particle_errors, particle_X;
 };
 
 MmsRunResult run_axis_aligned(const MmsRunOptions& options);
