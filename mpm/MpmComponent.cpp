@@ -106,7 +106,7 @@ void MpmComponent::initialize() {
       initialize_stress_from_body_force(m.density, setup_.gravity, *m.body_force_surface, m.model->bulk_modulus(),
                                         m.model->shear_modulus(), m.particles);
     m.F_old = m.particles.F;
-    m.L.assign(m.particles.size(), Mat3::Zero());
+    m.L.assign(keeps_L(m) ? m.particles.size() : 0, Mat3::Zero());
     update_stress(m, 0, 0.0);  // sigma(F = I) = 0, and the initial wave speeds
   }
   apply_loads(0.0);
@@ -255,6 +255,11 @@ void MpmComponent::internal_force(MpmMaterial& m, bool scattered) {
   sum_node_vectors(m.grid.internal_force);  // over the MPI ranks
   fold_internal_force(periodic_, m.grid);
   fold_symmetry_internal_force(m.bcs, m.grid, fold_dims(setup_.flags));
+}
+
+bool MpmComponent::keeps_L(const MpmMaterial& m) const {
+  return m.model->reads_velocity_gradient() || setup_.flags.artificial_viscosity || setup_.flags.axisymmetric ||
+         deformation_gradient_algorithm(setup_.flags.deformation_gradient) != DeformationGradientAlgorithm::FirstOrder;
 }
 
 // sigma_{n+1}, c, W, history from (F_n, F_{n+1}, l, sigma_n) (Alg. 11); V_{n+1} = J V0 (Alg. 9).
@@ -597,7 +602,8 @@ void MpmComponent::advance(double t, double dt, int step) {
       // approximate exp(dt l) (mpm/DeformationGradient.h).
       const DeformationGradientAlgorithm alg = deformation_gradient_algorithm(setup_.flags.deformation_gradient);
       if (!setup_.flags.axisymmetric && alg == DeformationGradientAlgorithm::FirstOrder) {
-        velocity_gradients_and_first_order_F(m.stencils, m.grid, dt, m.L, m.F_old, p.F);  // one pass, same bits
+        if (keeps_L(m)) velocity_gradients_and_first_order_F(m.stencils, m.grid, dt, m.L, m.F_old, p.F);  // one pass, same bits
+        else first_order_F(m.stencils, m.grid, dt, m.F_old, p.F);  // the same F, no L column
       } else {
         if (setup_.flags.axisymmetric) axisymmetric_velocity_gradients(m.stencils, m.grid, m.L);  // + v_r / r
         else velocity_gradients(m.stencils, m.grid, m.L);

@@ -55,7 +55,7 @@ struct MpmMaterial {
   // (used with <MPM><initialize_stress_using_body_force>; mpm/loads/BodyForceStress.h).
   std::optional<Vec3> body_force_surface;
   Stencils stencils;                    // scratch of the step
-  std::vector<Mat3> L;                  // velocity gradients of the step
+  std::vector<Mat3> L;                  // velocity gradients of the step (empty unless MpmComponent::keeps_L)
   std::vector<Mat3> F_old;              // F_n of the step (the model's input)
   std::vector<double> plastic_work;     // model outputs of the step: dissipated work per V0 [J/m^3]
   std::vector<double> heating;          //   and internal heating rate dT/dt [K/s], added to T in G2P
@@ -196,6 +196,11 @@ class MpmComponent final : public Component {
   int patch_of(const Vec3& x) const;       // level patch holding x (nearest interior cell)
   void keep_own_particles(MpmMaterial& m);
   void size_step_columns(MpmMaterial& m);  // L, F_old, plastic_work, heating to the particle count
+  // Whether the step keeps the per-particle L column: the model reads it, or
+  // artificial viscosity (tr D), or a step that forms F from a stored L
+  // (axisymmetric, a deformation-gradient series). Otherwise the fused pass
+  // forms F without storing L (72 B per particle less; first_order_F).
+  bool keeps_L(const MpmMaterial& m) const;
   void set_node_boxes();                   // this step's node boxes of all ranks (a collective)
   void sum_particles_to_grid(NodeGrid& g); // P2G arrays over the ranks (mpm/RankNodeSums.h)
   double sum_over_ranks(double local) const;  // in rank order, the same bits on every rank

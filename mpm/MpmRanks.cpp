@@ -108,7 +108,7 @@ void MpmComponent::size_step_columns(MpmMaterial& m) {
   const std::size_t n = m.particles.size();
   m.plastic_work.resize(n, 0.0);
   m.heating.resize(n, 0.0);
-  m.L.resize(n, Mat3::Zero());
+  m.L.resize(keeps_L(m) ? n : 0, Mat3::Zero());
   m.F_old.resize(n, Mat3::Identity());
 }
 

@@ -227,20 +227,36 @@ void velocity_gradients(const Stencils& s, const NodeGrid& g, std::vector<Mat3>&
   });
 }
 
-void velocity_gradients_and_first_order_F(const Stencils& s, const NodeGrid& g, double dt, std::vector<Mat3>& L,
-                                          const std::vector<Mat3>& F_old, std::vector<Mat3>& F) {
+namespace {
+
+// l_p and F_{n+1} = (I + dt l_p) F_n in one pass; l_p stored when KeepL.
+template <bool KeepL>
+void first_order_F_pass(const Stencils& s, const NodeGrid& g, double dt, std::vector<Mat3>* L,
+                        const std::vector<Mat3>& F_old, std::vector<Mat3>& F) {
   const std::size_t np = s.particles();
-  L.resize(np);
+  if constexpr (KeepL) L->resize(np);
   F.resize(F_old.size());
   const Vec3* vstar = g.velocity_star.data();
   visit_stencils(s, [&](const auto& view) {
 #pragma omp parallel for schedule(static) if (np >= kMinParallel)
     for (std::size_t i = 0; i < np; ++i) {
       const Mat3 l = particle_velocity_gradient(view, i, vstar);
-      L[i] = l;
+      if constexpr (KeepL) (*L)[i] = l;
       F[i] = (Mat3::Identity() + dt * l) * F_old[i];  // as update_deformation_gradients (FirstOrder)
     }
   });
+}
+
+}  // namespace
+
+void velocity_gradients_and_first_order_F(const Stencils& s, const NodeGrid& g, double dt, std::vector<Mat3>& L,
+                                          const std::vector<Mat3>& F_old, std::vector<Mat3>& F) {
+  first_order_F_pass<true>(s, g, dt, &L, F_old, F);
+}
+
+void first_order_F(const Stencils& s, const NodeGrid& g, double dt, const std::vector<Mat3>& F_old,
+                   std::vector<Mat3>& F) {
+  first_order_F_pass<false>(s, g, dt, nullptr, F_old, F);
 }
 
 void grid_to_particles(const Stencils& s, const NodeGrid& g, double dt, Particles& p) {

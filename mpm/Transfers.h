@@ -53,6 +53,10 @@ void velocity_gradients(const Stencils& s, const NodeGrid& g, std::vector<Mat3>&
 // the particles: the same expressions, so the same bits as the two calls.
 void velocity_gradients_and_first_order_F(const Stencils& s, const NodeGrid& g, double dt, std::vector<Mat3>& L,
                                           const std::vector<Mat3>& F_old, std::vector<Mat3>& F);
+// The same F without keeping l_p (for a model that does not read L:
+// MpmComponent::keeps_L): the same expressions, so the same bits.
+void first_order_F(const Stencils& s, const NodeGrid& g, double dt, const std::vector<Mat3>& F_old,
+                   std::vector<Mat3>& F);
 
 // G2P, FLIP update (Alg. 14, eq. 1.76):
 //   v_p += dt sum a_g S,  x_p += dt sum v*_g S,  u_p += dt sum v*_g S.

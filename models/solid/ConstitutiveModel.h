@@ -50,7 +50,8 @@ struct SolidUpdateInput {
   double density0 = 0.0;                     // reference mass density rho_0 [kg/m^3]
   std::span<const Eigen::Matrix3d> F_old;    // deformation gradient at t_n
   std::span<const Eigen::Matrix3d> F_new;    // deformation gradient at t_{n+1}
-  std::span<const Eigen::Matrix3d> L;        // velocity gradient of the step, F_{n+1} = (I + dt L) F_n
+  std::span<const Eigen::Matrix3d> L;        // velocity gradient of the step, F_{n+1} = (I + dt L) F_n;
+                                             // may be empty when the model's reads_velocity_gradient() is false
   std::span<const double> temperature;       // T at t_{n+1} [K]
   std::span<const Eigen::Matrix3d> stress_old;  // Cauchy stress at t_n (may alias out.stress)
   // Read-only point context for models whose law depends on where and when
@@ -107,6 +108,11 @@ class ConstitutiveModel {
 
   // True when update() reads SolidUpdateInput::position (drivers must supply it).
   virtual bool needs_position() const { return false; }
+
+  // False when update() never reads SolidUpdateInput::L (the law uses F_n and
+  // F_{n+1} only): the MPM driver may then pass an empty L and not keep the
+  // per-particle velocity-gradient column (72 B per particle; MpmComponent::keeps_L).
+  virtual bool reads_velocity_gradient() const { return true; }
 
   // ---- hooks MPMICE needs (Vaango computePressEOSCM / computeRhoMicroCM).
   // std::nullopt: not provided by this model; the caller reports MissingFeature.

@@ -74,6 +74,7 @@ class HypoElastic final : public ConstitutiveModel {
   std::string type() const override { return type_; }
   long update(const SolidUpdateInput& in, const SolidUpdateOutput& out) const override;
   std::vector<HistoryVariable> history() const override;
+  bool reads_velocity_gradient() const override { return false; }  // de from U_n, U_{n+1} (header)
   double bulk_modulus() const override { return p_.K; }
   double shear_modulus() const override { return p_.G; }
   // Vaango HypoElastic::computePressEOSCM: p = K (1 - rho0/rho), dp/drho = K rho0/rho^2,

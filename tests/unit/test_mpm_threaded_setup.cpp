@@ -10,7 +10,8 @@
 //   * NodeGrid::reset zeroes every array, sized to count(), for 1 and 2 threads;
 //   * velocity_gradients_and_first_order_F (one pass) gives the bits of
 //     velocity_gradients + update_deformation_gradients(FirstOrder), for the
-//     flat and per-axis (linear, gimp) stencils, with 1 and 2 threads;
+//     flat and per-axis (linear, gimp) stencils, with 1 and 2 threads, and
+//     first_order_F (no L column, session 24) the same F bits;
 //   * particles_to_grid_and_internal_force (one pass) gives the bits of
 //     particles_to_grid + compute_internal_force on a reset grid, with and
 //     without g.stressFS, for the same stencil forms, with 1 and 2 threads;
@@ -186,6 +187,11 @@ TEST(MpmThreadedSetup, FusedVelocityGradientAndFIsTheTwoPasses) {
         ASSERT_EQ(L[i], L_ref[i]) << i;
         ASSERT_EQ(F[i], F_ref[i]) << i;
       }
+      // Without the L column (a model that does not read L): the same F bits.
+      std::vector<Mat3> F_only;
+      first_order_F(st, g, dt, F_old, F_only);
+      ASSERT_EQ(F_only.size(), F_ref.size());
+      for (std::size_t i = 0; i < F_only.size(); ++i) ASSERT_EQ(F_only[i], F_ref[i]) << i;
     }
   }
 }
