@@ -60,16 +60,19 @@ def gurney_sandwich(d):
     return d / 2.97 / math.sqrt(M_OVER_C + 1.0 / 3.0)
 
 
-def front_history(tephra, out):
-    """Per output: (t, x of the reaction front (F >= 0.5) or None, x of the
-    lead shock (p > P_SHOCK) or None, the largest axis pressure)."""
+def front_history(tephra, out, line=None, axis="x"):
+    """Per output: (t, position of the reaction front (F >= 0.5) or None, of
+    the lead shock (p > P_SHOCK) or None, the largest pressure on the line).
+    line: the `tephra extract --line` of the axis cells (default this deck's
+    axis row), axis: the coordinate along it ("x"; "y" for the axisymmetric
+    deck of qm100curs_long.py)."""
     y = 0.5 * DX
-    line = f"-0.00499,{y},{y},0.04999,{y},{y}"
+    line = line or f"-0.00499,{y},{y},0.04999,{y},{y}"
     f_rows, p_rows = collections.defaultdict(list), collections.defaultdict(list)
     for r in extract(tephra, out, "F", 1, line):
-        f_rows[float(r["time"])].append((float(r["x"]), float(r["F"])))
+        f_rows[float(r["time"])].append((float(r[axis]), float(r["F"])))
     for r in extract(tephra, out, "press_CC", 0, line):
-        p_rows[float(r["time"])].append((float(r["x"]), float(r["press_CC"])))
+        p_rows[float(r["time"])].append((float(r[axis]), float(r["press_CC"])))
     hist = []
     for t in sorted(f_rows):
         xf = [x for x, f in f_rows[t] if f >= 0.5]

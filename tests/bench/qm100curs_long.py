@@ -35,6 +35,7 @@ import sys
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
 from jwlppcurs2d import extract, plot_series  # noqa: E402
+from qm100curs import front_history  # noqa: E402
 from rate_stick_size_effect import fit_slope  # noqa: E402
 
 DECK = os.path.normpath(os.path.join(HERE, "..", "..", "inputs", "validation", "qm100curs_axisym_long.ups"))
@@ -43,7 +44,7 @@ R_IN, R_OUT = 25.4e-3, 30.6e-3
 RHO_CU, RHO_HE = 8930.0, 1260.0
 STATIONS = (0.100, 0.150, 0.200, 0.250)
 FIT_LO, FIT_HI = 0.150, 0.280
-P_SHOCK = 2.0e8
+P_SHOCK = 2.0e8  # qm100curs.front_history's threshold too (the JWL++ ThresholdPressure)
 EXPANSIONS = (0.005, 0.010, 0.015)  # R - R_0 at which v_r is read [m]
 
 
@@ -71,19 +72,10 @@ def selftest():
 
 
 def axis_history(tephra, out):
+    """(t, front y, lead-shock y) on the first radial column (qm100curs.front_history along y)."""
     y = 0.5 * DX
     line = f"{y},-0.0045,{y},{y},0.2995,{y}"
-    f_rows, p_rows = collections.defaultdict(list), collections.defaultdict(list)
-    for r in extract(tephra, out, "F", 1, line):
-        f_rows[float(r["time"])].append((float(r["y"]), float(r["F"])))
-    for r in extract(tephra, out, "press_CC", 0, line):
-        p_rows[float(r["time"])].append((float(r["y"]), float(r["press_CC"])))
-    hist = []
-    for t in sorted(f_rows):
-        yf = [y for y, f in f_rows[t] if f >= 0.5]
-        ys = [y for y, p in p_rows.get(t, []) if p > P_SHOCK]
-        hist.append((t, max(yf) if yf else None, max(ys) if ys else None))
-    return hist
+    return [(t, yf, ys) for t, yf, ys, _ in front_history(tephra, out, line, "y")]
 
 
 def wall_history(tephra, out):
