@@ -5,8 +5,14 @@ the stock MPMICE/QM100CuRS.ups made axisymmetric and lengthened to 300 mm;
 its header lists every change).
 
 Usage:
-  tests/bench/qm100curs_long.py BUILD_DIR run      OUT [--end-time T]
-  tests/bench/qm100curs_long.py BUILD_DIR analyse  OUT [--png-dir DIR]
+  tests/bench/qm100curs_long.py BUILD_DIR run      OUT [--end-time T] [--dx 0.5e-3]
+  tests/bench/qm100curs_long.py BUILD_DIR analyse  OUT [--png-dir DIR] [--dx 0.5e-3]
+
+--dx: the cell size; the deck is at 1 mm (48 x 305 cells), and `run` with
+--dx 0.5e-3 writes OUT.ups, the same deck with <resolution> scaled to
+96 x 610 (particles per cell unchanged), and runs that. `analyse` needs the
+same --dx (the axis column r = dx/2 and the outer copper row r > R_out - dx/2);
+figures and CSV other than at 1 mm are named qm100curs-long-<dx>mm-*.
   tests/bench/qm100curs_long.py selftest           (the Gurney arithmetic against hand values)
 
 Front: the largest axial y of a cell of the first radial column (r = dx/2)
@@ -39,7 +45,7 @@ from qm100curs import front_history  # noqa: E402
 from rate_stick_size_effect import fit_slope  # noqa: E402
 
 DECK = os.path.normpath(os.path.join(HERE, "..", "..", "inputs", "validation", "qm100curs_axisym_long.ups"))
-DX = 1.0e-3
+DX = 1.0e-3  # the deck's cell size; --dx changes it
 R_IN, R_OUT = 25.4e-3, 30.6e-3
 RHO_CU, RHO_HE = 8930.0, 1260.0
 STATIONS = (0.100, 0.150, 0.200, 0.250)
@@ -68,22 +74,30 @@ def selftest():
     assert abs(v - 1138.4) < 0.1, v
     # The planar sandwich of the same wall (qm100curs.py) is faster: + 1/3, M/C = 1.451.
     assert gurney_cylinder(6502.5, 1.451) > v
+    # --dx 0.5e-3: the deck with only <resolution> changed, to [96, 610, 1].
+    import tempfile
+    with tempfile.TemporaryDirectory() as tmp:
+        fine = open(scaled_deck(0.5e-3, os.path.join(tmp, "d.ups"))).read().splitlines()
+    base = open(DECK).read().splitlines()
+    changed = [(a, b) for a, b in zip(base, fine) if a != b]
+    assert len(base) == len(fine) and len(changed) == 1 and "[96, 610, 1]" in changed[0][1], changed
+    assert stem(DX) == "qm100curs-long" and stem(0.5e-3) == "qm100curs-long-0.5mm"
     print("qm100curs_long selftest: ok (M/C = %.5f, Gurney at D_CJ = %.1f m/s)" % (m_over_c(), v))
 
 
-def axis_history(tephra, out):
+def axis_history(tephra, out, dx=DX):
     """(t, front y, lead-shock y) on the first radial column (qm100curs.front_history along y)."""
-    y = 0.5 * DX
+    y = 0.5 * dx
     line = f"{y},-0.0045,{y},{y},0.2995,{y}"
     return [(t, yf, ys) for t, yf, ys, _ in front_history(tephra, out, line, "y")]
 
 
-def wall_history(tephra, out):
+def wall_history(tephra, out, dx=DX):
     rows = extract(tephra, out, "p.velocity", 0)
     pos = extract(tephra, out, "p.x", 0)
     t0 = min(float(r["time"]) for r in rows)
     start = {r["particle_id"]: (float(r["x"]), float(r["y"])) for r in rows if float(r["time"]) == t0}
-    groups = {s: {i for i, (r, y) in start.items() if r > R_OUT - 0.5e-3 and abs(y - s) <= 0.5e-3}
+    groups = {s: {i for i, (r, y) in start.items() if r > R_OUT - 0.5 * dx and abs(y - s) <= 0.5e-3}
               for s in STATIONS}
     where = {(r["time"], r["particle_id"]): float(r["x"]) for r in pos}
     acc = {s: collections.defaultdict(list) for s in STATIONS}
@@ -108,8 +122,24 @@ def at_expansion(h, dr):
     return None
 
 
-def analyse(tephra, out, png_dir):
-    hist = axis_history(tephra, out)
+def stem(dx):
+    return "qm100curs-long" if dx == DX else f"qm100curs-long-{dx * 1e3:g}mm"
+
+
+def scaled_deck(dx, path):
+    """The deck with <resolution> [48, 305, 1] scaled by DX/dx (an integer), written to path."""
+    k = round(DX / dx)
+    assert k >= 1 and abs(k * dx - DX) < 1e-12 * DX, f"--dx must divide {DX} m"
+    text = open(DECK).read()
+    old = "<resolution>   [48, 305, 1]"
+    assert text.count(old) == 1, "deck's <resolution> line changed: update scaled_deck"
+    with open(path, "w") as fh:
+        fh.write(text.replace(old, f"<resolution>   [{48 * k}, {305 * k}, 1]"))
+    return path
+
+
+def analyse(tephra, out, png_dir, dx=DX):
+    hist = axis_history(tephra, out, dx)
     nan = float("nan")
     for t, yf, ys in hist[::2]:
         print(f"t = {t * 1e6:6.2f} us  front (F >= 0.5) = {yf * 1e3 if yf else nan:6.1f} mm"
@@ -119,7 +149,7 @@ def analyse(tephra, out, png_dir):
     print(f"D = {d:.0f} m/s over {len(pts)} outputs (front in [{FIT_LO * 1e3:g}, {FIT_HI * 1e3:g}] mm)")
     g = gurney_cylinder(d) if d == d else nan
     print(f"Gurney (cylinder, sqrt(2E) = D/2.97, M/C = {m_over_c():.3f}): {g:.0f} m/s")
-    wall, sizes = wall_history(tephra, out)
+    wall, sizes = wall_history(tephra, out, dx)
     csv_rows = [("front_y_m", t, y) for t, y, _ in hist] + [("shock_y_m", t, y) for t, _, y in hist]
     for s, h in wall.items():
         vmax = max((v for _, v, _, _ in h), default=nan)
@@ -132,7 +162,7 @@ def analyse(tephra, out, png_dir):
         csv_rows += [(f"wall_vr_m_per_s_at_y_{s * 1e3:.0f}mm", t, v) for t, v, _, _ in h]
         csv_rows += [(f"wall_dr_m_at_y_{s * 1e3:.0f}mm", t, dr) for t, _, dr, _ in h]
     os.makedirs(png_dir, exist_ok=True)
-    with open(os.path.join(png_dir, "qm100curs-long.csv"), "w") as fh:
+    with open(os.path.join(png_dir, stem(dx) + ".csv"), "w") as fh:
         fh.write("quantity,time_s,value\n")
         for q, t, v in csv_rows:
             fh.write(f"{q},{t:.6e},{'' if v is None else f'{v:.6e}'}\n")
@@ -146,9 +176,9 @@ def analyse(tephra, out, png_dir):
     if g == g:
         series.append(([(0.0, g), (tt, g)], (0, 0, 0)))
         legend.append((f"GURNEY {g:.0f} M/S", (0, 0, 0)))
-    plot_series(os.path.join(png_dir, "qm100curs-long-wall-velocity.png"), series, (0.0, tt), (0.0, vt), xt,
+    plot_series(os.path.join(png_dir, stem(dx) + "-wall-velocity.png"), series, (0.0, tt), (0.0, vt), xt,
                 [200.0 * k for k in range(8)], "T (US)", "WALL RADIAL VELOCITY V_R (M/S), OUTER COPPER ROW", legend)
-    plot_series(os.path.join(png_dir, "qm100curs-long-front.png"),
+    plot_series(os.path.join(png_dir, stem(dx) + "-front.png"),
                 [([(t * 1e6, None if y is None else y * 1e3) for t, y, _ in hist], colours[0]),
                  ([(t * 1e6, None if y is None else y * 1e3) for t, _, y in hist], colours[3])],
                 (0.0, tt), (0.0, 300.0), xt, [50.0 * k for k in range(7)], "T (US)", "Y (MM) ON THE AXIS",
@@ -162,19 +192,21 @@ def main():
     build, mode = sys.argv[1], sys.argv[2]
     args = list(sys.argv[3:])
     opts = {}
-    for key in ("--end-time", "--png-dir"):
+    for key in ("--end-time", "--png-dir", "--dx"):
         if key in args:
             i = args.index(key)
             opts[key] = args[i + 1]
             del args[i:i + 2]
     out = os.path.abspath(args[0] if args else "/tmp/qm100curs_long")
     tephra = os.path.join(build, "bin", "tephra")
+    dx = float(opts.get("--dx", DX))
     if mode == "run":
-        cmd = [tephra, DECK, "--output", out, "--threads", "1", "--quiet"]
+        deck = DECK if dx == DX else scaled_deck(dx, out.rstrip("/") + ".ups")
+        cmd = [tephra, deck, "--output", out, "--threads", "1", "--quiet"]
         if "--end-time" in opts:
             cmd += ["--end-time", opts["--end-time"]]
         subprocess.run(cmd, check=True)
-    analyse(tephra, out, opts.get("--png-dir", out))
+    analyse(tephra, out, opts.get("--png-dir", out), dx)
 
 
 if __name__ == "__main__":
