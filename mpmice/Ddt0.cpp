@@ -22,12 +22,13 @@ Ddt0Detonation ddt0_detonation(const Ddt0Params& prm, double p, double reactant_
 }
 
 double ddt0_deflagration_mass(const Ddt0Params& prm, double dt, double area, double p, double T, double F,
-                              bool cracked) {
+                              bool cracked, double crack_cells) {
   const bool hot = T > prm.threshold_temperature;
   double dm = hot ? dt * area * prm.burn_coeff * std::pow(p / prm.ref_pressure, 0.778) : 0.0;
   // Uintah adds the crack term in the hot branch and again in the cracked-but-cold
   // one; without <useCrackModel> Gcrack is 0 here.
-  if (prm.crack_model && (hot || cracked)) dm += prm.g_crack * (1 - F) * std::pow(p / prm.ref_pressure, prm.n_crack);
+  if (prm.crack_model && (hot || cracked))
+    dm += crack_cells * (prm.g_crack * (1 - F) * std::pow(p / prm.ref_pressure, prm.n_crack));
   return dm;
 }
 

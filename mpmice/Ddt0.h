@@ -55,8 +55,10 @@ Ddt0Detonation ddt0_detonation(const Ddt0Params& prm, double p, double reactant_
 
 // The deflagration mass of one cell (before the cap at M_r): T the burning
 // temperature (0 if no material is hot enough), area the Simple_Burn area,
-// F the product fraction, cracked the crack test.
+// F the product fraction, cracked the crack test, crack_cells the cell's
+// size in Cartesian cells for the crack term (a mass per cell per step in
+// Uintah): 1, or r_c / dz per radian in axisymmetric MPMICE.
 double ddt0_deflagration_mass(const Ddt0Params& prm, double dt, double area, double p, double T, double F,
-                              bool cracked);
+                              bool cracked, double crack_cells = 1.0);
 
 }  // namespace tephra

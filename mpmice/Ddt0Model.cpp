@@ -95,7 +95,12 @@ class Ddt0Model final : public SolidBurnModel {
   double burn_mass(const BurnCell& c) override {
     const IceModelInput& in = *c.in;
     const std::size_t pi = c.patch;
-    const double V = in.grid.cell_volume();
+    // The cell's volume in the model's mass units: V, or r_c dx dy per radian
+    // (axisymmetric, mpmice/AxisymmetricBurn.h). Uintah's crack term is a mass
+    // per Cartesian cell per step; per radian the cell holds c.volume / V_cart
+    // of it (r_c / dz: the ratio of the per-radian to the Cartesian cell mass).
+    const double V = c.volume;
+    const double crack_cells = V / in.grid.cell_volume();  // exactly 1 in Cartesian runs
     const double Mp = in.mats[product()].rho_CC[pi](c.c) * V;
     if (Ddt0Branch(int(branch_[pi](c.c))) == Ddt0Branch::Detonating) {
       const Ddt0Detonation d = ddt0_detonation(prm_, c.pressure, c.solid_mass, Mp, V, in.dt);
@@ -107,7 +112,7 @@ class Ddt0Model final : public SolidBurnModel {
     const double total = c.solid_mass + Mp;
     const double F = total > 0 ? Mp / total : 0.0;
     return std::min(ddt0_deflagration_mass(prm_, in.dt, c.area, c.pressure, c.temperature, F,
-                                           cracked_[pi](c.c) > 0),
+                                           cracked_[pi](c.c) > 0, crack_cells),
                     c.solid_mass);
   }
 

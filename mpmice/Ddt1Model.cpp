@@ -249,7 +249,10 @@ class Ddt1Model final : public SolidBurnModel {
   double burn_mass(const BurnCell& c) override {
     const IceModelInput& in = *c.in;
     const std::size_t pi = c.patch;
-    const double V = in.grid.cell_volume();
+    // The cell's volume in the model's mass units: V, or r_c dx dy per radian
+    // (axisymmetric, mpmice/AxisymmetricBurn.h): the product's cell mass, the
+    // 20 % cap 0.2 rho0 V and the convective area V / 0.002 m all scale with it.
+    const double V = c.volume;
     const auto br = Ddt1Branch(int(branch_[pi](c.c)));
     if (br == Ddt1Branch::Detonating) {
       const double Mp = in.mats[product()].rho_CC[pi](c.c) * V;

@@ -1,8 +1,3 @@
-// NOT REGISTERED (MesoBurn decks exit 3; docs/mpmice.md "MesoBurn"): its
-// verification run on massX at 600 K ignited at the step the clock's closed
-// form predicts, with nothing burned before, but burned 10x the 8-cell WSB
-// estimate at ignition - not yet understood, so the model is not offered.
-//
 // <Model type="MesoBurn"> in MPMICE (mpmice/SolidBurn.h; Uintah's
 // HEChem/MesoBurn.cc, read for the rules): Steady_Burn's WSB surface burning
 // ignited by per-particle induction clocks (mpmice/MesoBurn.h).
@@ -27,8 +22,9 @@
 // totalHeatReleased, totalSurfaceArea (here the summed burning area; Uintah
 // adds the surface temperatures into it).
 // Not implemented (MissingFeature, exit 3): MesoBurn on MPI ranks (the clocks
-// do not migrate with the particles), and restarting a MesoBurn run (the
-// clocks are not in the checkpoint). <AfterMelting> is read; Uintah only
+// do not migrate with the particles). The clocks are in the checkpoint
+// (save_arrays). In axisymmetric MPMICE the masses, the area (mpmice/
+// AxisymmetricBurn.h) and the minimum cell mass are per radian. <AfterMelting> is read; Uintah only
 // checks with it that the reactant is elastic_plastic_hp and does not use it
 // in the rate: no effect here.
 #include <algorithm>
@@ -150,7 +146,7 @@ class MesoBurnModel final : public SolidBurnModel {
     const double vs = in.mats[reactant()].sp_vol_CC[c.patch](c.c);
     const WsbState w = wsb_burn_rate(prm_.wsb, c.pressure, c.temperature, vs);
     ts_[c.patch](c.c) = w.surface_temperature;
-    const double min_mass = in.grid.cell_volume() * 1e-12;  // Uintah's MIN_MASS_IN_A_CELL (WsbSurfaceCell.h)
+    const double min_mass = c.volume * 1e-12;  // Uintah's MIN_MASS_IN_A_CELL (WsbSurfaceCell.h); per radian when axisymmetric
     const double dm = in.dt * c.area * w.mass_flux;
     const double induced = induced_mass_[c.patch](c.c);
     return std::max(0.0, dm + min_mass > induced ? induced - min_mass : dm);
@@ -187,7 +183,6 @@ class MesoBurnModel final : public SolidBurnModel {
 
 }  // namespace
 
-// Not registered (header); kept for the next session.
 IceModelP make_meso_burn(const DeckNode& model, const IceSetup& setup) {
   ModelParams mp(model, "MesoBurn");
   const std::size_t r = mp.material("fromMaterial", setup), p = mp.material("toMaterial", setup);

@@ -83,6 +83,11 @@ TEST(MpmIceDdt0, DeflagrationIsTheSimpleBurnLawPlusTheCrackTerm) {
   EXPECT_NEAR(ddt0_deflagration_mass(p, dt, A, P, 500, F, false), sb + crack, 1e-14 * (sb + crack));
   EXPECT_NEAR(ddt0_deflagration_mass(p, dt, A, P, 0, F, true), crack, 1e-14 * crack);
   EXPECT_EQ(ddt0_deflagration_mass(p, dt, A, P, 0, F, false), 0.0);
+  // Axisymmetric (session 25): the crack term is a mass per Cartesian cell, so a
+  // per-radian cell of r_c dx dy = (r_c/dz) dx dy dz carries r_c/dz of it; the
+  // Simple_Burn part already has the per-radian area A.
+  EXPECT_NEAR(ddt0_deflagration_mass(p, dt, A, P, 500, F, false, 3.5), sb + 3.5 * crack, 1e-14 * (sb + 3.5 * crack));
+  EXPECT_NEAR(ddt0_deflagration_mass(p, dt, A, P, 0, F, true, 0.5), 0.5 * crack, 1e-14 * crack);
 }
 
 TEST(MpmIceTestModel, FractionIsRateTimesDtCappedAtOne) {

@@ -331,25 +331,110 @@ TEST(MpmIceAxisymmetricBurn, ResZTwoDoublesTheMassAndWarns) {
   EXPECT_NE(err.find("<res> z = 2"), std::string::npos) << err;
 }
 
-// A burn model without the per-radian conversion (DDT0: its crack term is a
-// mass per step) still stops the deck reader: MissingFeature (exit 3) naming it.
-TEST(MpmIceAxisymmetricBurn, Ddt0WithAxisymmetricIsAMissingFeatureNamingIt) {
+// DDT1 and DDT0 in axisymmetric MPMICE (session 25): their cell volume,
+// masses and areas are per radian (BurnCell::volume = r_c dx dy).
+// The model block: the WSB constants of make_steady_burn, DDT1's thresholds.
+void make_ddt(DeckNode& root, const std::string& type, const std::string& jwl_pressure, const std::string& G) {
+  DeckNode& m = test::deck_node(root, {"Models", "Model"});
+  if (type == "DDT1") {
+    make_steady_burn(root);
+    for (DeckNode& c : m.children)
+      if (c.name == "ThresholdPressure") c.name = "ThresholdPressureSB";  // DDT1's name for the WSB threshold
+  } else {  // DDT0: Simple_Burn's constants
+    m.children = {leaf("fromMaterial", "steel"), leaf("toMaterial", "air"),    leaf("Enthalpy", "0"),
+                  leaf("BurnCoeff", "1"),        leaf("refPressure", "101325"), leaf("ThresholdTemp", "299"),
+                  leaf("ThresholdPressureSB", "50000")};
+  }
+  for (auto& [k, v] : m.attributes)
+    if (k == "type") v = type;
+  // E0 = 0: no heat of detonation, so a detonating step stays mild.
+  for (const DeckNode& n : {leaf("ThresholdPressureJWL", jwl_pressure), leaf("G", G), leaf("b", "1"), leaf("E0", "0")})
+    m.children.push_back(n);
+}
+
+CoupledRun make_ddt_run(const std::string& type, const std::string& jwl_pressure, const std::string& G) {
+  return test::make_coupled_run(test::source_dir() + "/inputs/mpmice/burning_cylinder_axisym.ups",
+                                [&](DeckNode& root) { make_ddt(root, type, jwl_pressure, G); });
+}
+
+// DDT1 below ThresholdPressureJWL (5.3 GPa) and above ThresholdPressureSB
+// (50 kPa), ignited by the 300 K air: the conductive branch, which is
+// Steady_Burn's WSB burning of the mantle, dt m_WSB R L per radian; the same
+// mass as the Steady_Burn run of SteadyBurnStepIsTheWsbRateTimesRL.
+TEST(MpmIceAxisymmetricBurn, Ddt1ConductiveBranchIsTheWsbRateTimesRL) {
+  set_thread_count(1);
+  CoupledRun steady = make_run(true, true), ddt1 = make_ddt_run("DDT1", "5.3e9", "2.33e-6");
+  test::run_to(steady, 1.0, 1);
+  test::run_to(ddt1, 1.0, 1);
+  const double ws = burn_model(steady).mass_burned_last_step(), wd = burn_model(ddt1).mass_burned_last_step();
+  WsbParams w;
+  w.R = 8.314, w.Ac = 1.637e15, w.Ec = 1.76e5, w.Bg = 1.6e-3, w.Qc = 4.0e5, w.Qg = 3.018e6;
+  w.kg = 0.07, w.kc = 0.2, w.Cp = 1.4e3, w.W = 0.0342;
+  const double closed = ddt1.time * kR * kL * wsb_burn_rate(w, kPref, 300.0, 1.0 / 8900.0).mass_flux;
+  std::printf("[mpmice axisym burn] DDT1 conductive step 1: %.17g kg/rad, Steady_Burn %.17g, closed form dt m R L "
+              "%.17g (rel %.2e)\n", wd, ws, closed, wd / closed - 1);
+  EXPECT_GT(wd, 0.0);
+  EXPECT_NEAR(wd, ws, 1e-14 * ws);
+  EXPECT_NEAR(wd, closed, 1e-6 * closed);  // as SteadyBurnStepIsTheWsbRateTimesRL (p_equil round-off)
+}
+
+// Above ThresholdPressureJWL (50 kPa < p0) every cell with reactant volume
+// fraction > ThresholdVolFrac (0.01) detonates: dm = min(G p^b (1 - F) dt
+// (M_r + M_p), M_r, 0.2 rho0 V). With G = 10 /(s Pa), b = 1, dt = 1e-6 s,
+// G p dt = 1.01, so Souers' 20 % cap binds: dm = 0.2 rho0 V with the
+// per-radian V = r_c dx dy. The steel fills the columns r < R completely
+// (rho_CC = rho0 = 8900), so the step burns 0.2 rho0 sum_c r_c dx dy =
+// 0.2 rho0 R^2 L / 2 per radian (= 17.8 kg/rad); with the Cartesian
+// V = dx dy dz it would be 0.2 rho0 (R/dx) (L/dy) dx dy dz = 8.9 kg.
+// DDT0 has the same law (and its cut-off at F >= 0.99, far away here).
+void detonation_step_one(const std::string& type) {
+  set_thread_count(1);
+  CoupledRun r = make_ddt_run(type, "50000", "10");
+  const std::vector<double> m0 = r.c->mpm().materials()[0].particles.mass;
+  test::run_to(r, 1.0, 1);
+  const SolidBurnModel& b = burn_model(r);
+  const CellScalars* det = nullptr;
+  for (const ModelField& f : b.fields())
+    if (f.label == "detonating") det = f.field;
+  ASSERT_NE(det, nullptr);
+  const Grid& g = r.c->ice().grid();
+  int inside = 0, outside = 0;
+  for_each_cell_serial(g.patches[0].cells(), [&](int i, int j, int k) {
+    ((i < 4) ? inside : outside) += (*det)[0](i, j, k) > 0;
+  });
+  const double closed = 0.2 * 8900.0 * kR * kR * kL / 2;
+  const double burned = b.mass_burned_last_step(), lost = mass_lost(m0, *r.c);
+  std::printf("[mpmice axisym burn] %s detonation step 1: detonating cells %d inside r < R, %d outside; burned %.17g "
+              "kg/rad, 0.2 rho0 R^2 L / 2 = %.17g (rel %.2e), particles lost %.17g\n",
+              type.c_str(), inside, outside, burned, closed, burned / closed - 1, lost);
+  EXPECT_EQ(inside, 40);
+  EXPECT_EQ(outside, 0);
+  // rho_CC of the steel = 8900 to 6.7e-16 in every covered cell (test_mpmice_axisymmetric).
+  EXPECT_NEAR(burned, closed, 1e-13 * closed);
+  EXPECT_NEAR(lost, burned, storage_roundoff(m0, *r.c) + 1e-12 * burned);
+}
+
+TEST(MpmIceAxisymmetricBurn, Ddt1DetonationCapIsPerRadian) { detonation_step_one("DDT1"); }
+TEST(MpmIceAxisymmetricBurn, Ddt0DetonationCapIsPerRadian) { detonation_step_one("DDT0"); }
+
+// MesoBurn (per-particle induction clocks) has no per-radian verification:
+// with <axisymmetric> the deck reader stops, MissingFeature (exit 3) naming it.
+TEST(MpmIceAxisymmetricBurn, MesoBurnWithAxisymmetricIsAMissingFeatureNamingIt) {
   std::unique_ptr<Deck> deck = load_deck(test::source_dir() + "/inputs/mpmice/burning_cylinder_axisym.ups");
+  make_steady_burn(deck->root);
   DeckNode& m = test::deck_node(deck->root, {"Models", "Model"});
   for (auto& [k, v] : m.attributes)
-    if (k == "type") v = "DDT0";
-  m.children = {leaf("fromMaterial", "steel"),        leaf("toMaterial", "air"),   leaf("ThresholdPressureJWL", "5.3e9"),
-                leaf("G", "2.33e-6"),                 leaf("b", "1.2"),            leaf("E0", "5.448e6"),
-                leaf("Enthalpy", "0"),                leaf("BurnCoeff", "1"),      leaf("refPressure", "101325"),
-                leaf("ThresholdTemp", "299"),         leaf("ThresholdPressureSB", "500")};
+    if (k == "type") v = "MesoBurn";
+  std::erase_if(m.children, [](const DeckNode& c) { return c.name == "IgnitionTemp"; });  // not a MesoBurn parameter
+  for (const DeckNode& n : {leaf("Ta", "1000"), leaf("k", "1e-3"), leaf("Cv", "1500")}) m.children.push_back(n);
   deck->root.finalize_parents();
   try {
     make_mpmice_component(*deck);
-    ADD_FAILURE() << "DDT0 with <axisymmetric> was accepted";
+    ADD_FAILURE() << "MesoBurn with <axisymmetric> was accepted";
   } catch (const MissingFeature& e) {
     const std::string what = e.what();
-    std::printf("[mpmice axisym burn] DDT0: %s\n", what.c_str());
-    EXPECT_NE(what.find("DDT0"), std::string::npos);
+    std::printf("[mpmice axisym burn] MesoBurn: %s\n", what.c_str());
+    EXPECT_NE(what.find("MesoBurn"), std::string::npos);
     EXPECT_NE(what.find("axisymmetric"), std::string::npos);
   }
 }
