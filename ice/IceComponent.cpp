@@ -202,10 +202,9 @@ void IceComponent::fill_cell_gas_cv(std::size_t m, std::size_t pi) {
 // geometric fractions; docs/mpmice.md.)
 void IceComponent::exchange_cell_state(std::size_t m) {
   IceMaterialFields& f = mats_[m];
-  halo_->exchange(f.rho_CC);
-  halo_->exchange(f.vel_CC);
-  halo_->exchange(f.temp_CC);
-  halo_->exchange(f.sp_vol_CC);
+  CellHaloBatch batch;
+  batch.add(f.rho_CC).add(f.vel_CC).add(f.temp_CC).add(f.sp_vol_CC);
+  halo_->exchange_now(batch);
 }
 
 void IceComponent::fluids_fill_volume_left_by_solids() {
@@ -408,7 +407,7 @@ void IceComponent::coupled_transport_phases(double dt, int step) {
   check_state(step, "end of step");
 }
 
-void IceComponent::apply_state_bcs(std::size_t m) {
+void IceComponent::apply_state_bcs(std::size_t m, CellHaloBatch* deferred) {
   const Grid& g = setup_.grid;
   IceMaterialFields& f = mats_[m];
   for (std::size_t pi = 0; pi < g.patches.size(); ++pi) {
@@ -429,10 +428,11 @@ void IceComponent::apply_state_bcs(std::size_t m) {
     }
     if (setup_.lodi.enabled) lodi_state_bc(m, pi);
   }
-  halo_->exchange(f.rho_CC);
-  halo_->exchange(f.temp_CC);
-  halo_->exchange(f.vel_CC);
-  halo_->exchange(f.sp_vol_CC);
+  CellHaloBatch now;
+  CellHaloBatch& batch = deferred ? *deferred : now;
+  batch.add(f.rho_CC).add(f.temp_CC).add(f.vel_CC).add(f.sp_vol_CC);
+  halo_->begin_exchange(batch);
+  if (!deferred) halo_->finish_exchange(batch);
 }
 
 // A NaN, a non-positive density, temperature or specific volume stops the

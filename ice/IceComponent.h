@@ -207,7 +207,10 @@ class IceComponent final : public Component {
   // a_f of the implicit pressure matrix on face R of axis d (ImplicitPressureMatrix.cpp).
   double pressure_face_coefficient(int d, std::size_t pi, const IntVec3& R, double dt, bool boundary, int face) const;
   void fluids_fill_volume_left_by_solids();  // MPMICE initial state (IceComponent.cpp)
-  void apply_state_bcs(std::size_t m);  // rho, vel, temp, sp_vol extra cells of material m
+  // rho, vel, temp, sp_vol extra cells of material m, then their ghosts in one
+  // message round; with `deferred`, the round is begun into it and the caller
+  // finishes it (HaloExchange::finish_exchange), overlapping other work.
+  void apply_state_bcs(std::size_t m, CellHaloBatch* deferred = nullptr);
   // LODI faces (IceLodiBcs.cpp, ice/Lodi.h): the pressure, the Lagrangian
   // velocity/temperature and the new state of the LODI material.
   void lodi_pressure_bc(std::size_t pi, CellScalars& press);

@@ -94,13 +94,10 @@ void IceComponent::compute_equilibration_pressure(int step) {
     apply_pressure_bc(pi, press_equil_CC_);
     if (setup_.lodi.enabled) lodi_pressure_bc(pi, press_equil_CC_);
   }
-  halo_->exchange(press_equil_CC_);
-  for (IceMaterialFields& f : mats_) {
-    halo_->exchange(f.sp_vol_CC);
-    halo_->exchange(f.vol_frac_CC);
-    halo_->exchange(f.rho_micro_CC);
-    halo_->exchange(f.speedSound_CC);
-  }
+  CellHaloBatch batch;  // one message round for the 1 + 4 nm fields
+  batch.add(press_equil_CC_);
+  for (IceMaterialFields& f : mats_) batch.add(f.sp_vol_CC).add(f.vol_frac_CC).add(f.rho_micro_CC).add(f.speedSound_CC);
+  halo_->exchange_now(batch);
 }
 
 // Step 2 (eq. 26.1, Uintah's computeFaceCenteredVelocities): on the face
@@ -567,7 +564,9 @@ void IceComponent::lagrangian_values_and_exchange(double dt) {
       throw StepRedoRequest{why};
     }
   }
-  // Boundary values of the Lagrangian state; output copies.
+  // Boundary values of the Lagrangian state; output copies. Material m's
+  // ghosts travel while material m + 1's boundary values are computed.
+  std::vector<CellHaloBatch> in_flight(nm);
   for (std::size_t m = 0; m < nm; ++m) {
     IceMaterialFields& f = mats_[m];
     for (std::size_t pi = 0; pi < g.patches.size(); ++pi) {
@@ -601,11 +600,10 @@ void IceComponent::lagrangian_values_and_exchange(double dt) {
         }
       });
     }
-    halo_->exchange(mass_L_[m]);
-    halo_->exchange(vel_L_[m]);
-    halo_->exchange(temp_L_[m]);
-    halo_->exchange(spv_L_[m]);
+    in_flight[m].add(mass_L_[m]).add(vel_L_[m]).add(temp_L_[m]).add(spv_L_[m]);
+    halo_->begin_exchange(in_flight[m]);
   }
+  for (CellHaloBatch& b : in_flight) halo_->finish_exchange(b);
 }
 
 // Viscous force div(theta tau) and conduction div(theta k grad T) of material
@@ -659,6 +657,8 @@ void IceComponent::advect_and_advance(double dt, int step) {
   const double V = g.cell_volume();
   const EnergyCorrection energy = energy_correction();
   if (energy == EnergyCorrection::Mixture) work_corr_[0].fill(0.0);  // sum over materials of D (IceEnergy.cpp)
+  // Material m's new state's ghosts travel while material m + 1 is advected.
+  std::vector<CellHaloBatch> in_flight(mats_.size());
   for (std::size_t m = 0; m < mats_.size(); ++m) {
     if (setup_.materials[m].lagrangian) continue;  // MPMICE solid: the particles carry it (mpmice/)
     IceMaterialFields& f = mats_[m];
@@ -724,8 +724,10 @@ void IceComponent::advect_and_advance(double dt, int step) {
     }
     advect_content(m, spv_L_[m], f.sp_vol_CC, dt);
     if (energy != EnergyCorrection::None) add_advected_kinetic_energy_loss(m);  // IceEnergy.cpp
-    apply_state_bcs(m);
+    apply_state_bcs(m, &in_flight[m]);
   }
+  for (CellHaloBatch& b : in_flight)
+    if (b.in_flight) halo_->finish_exchange(b);
   if (energy == EnergyCorrection::Mixture) add_mixture_advected_kinetic_energy_loss();  // IceEnergy.cpp
 }
 

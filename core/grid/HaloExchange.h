@@ -21,16 +21,51 @@
 //   that scatters into ghost nodes must start from a zeroed field. Values in
 //   ghost nodes beyond the extra nodes of a non-periodic face belong to no
 //   node and are dropped (no particle may be there; the MPM step checks).
+//
+// A CellHaloBatch fills the ghosts of several cell fields together (issue 7
+// item 1): begin_exchange() sends the owned values of every field of the
+// batch (over MPI: one message per peer rank for the whole batch, not one
+// per field), finish_exchange() receives and writes the ghosts. Work done
+// between the two overlaps the messages; it must not read the batch's ghosts,
+// and owned values it writes after begin_exchange() are not in this exchange.
+// The ghosts after finish_exchange() are those exchange() gives each field
+// alone, bit for bit.
 #include <memory>
+#include <vector>
 
 #include "core/base/Types.h"
 #include "core/grid/Fields.h"
 
 namespace tephra {
 
+struct CellHaloBatch {
+  CellHaloBatch& add(PatchFields<CellField<double>>& f) {
+    scalars.push_back(&f);
+    return *this;
+  }
+  CellHaloBatch& add(PatchFields<CellField<Vec3>>& f) {
+    vectors.push_back(&f);
+    return *this;
+  }
+  std::vector<PatchFields<CellField<double>>*> scalars;
+  std::vector<PatchFields<CellField<Vec3>>*> vectors;
+  std::shared_ptr<void> in_flight;  // the implementation's messages between begin and finish
+};
+
 class HaloExchange {
  public:
   virtual ~HaloExchange() = default;
+
+  // In one process: every field's exchange() at begin, nothing at finish.
+  virtual void begin_exchange(CellHaloBatch& b) {
+    for (auto* f : b.scalars) exchange(*f);
+    for (auto* f : b.vectors) exchange(*f);
+  }
+  virtual void finish_exchange(CellHaloBatch&) {}
+  void exchange_now(CellHaloBatch& b) {
+    begin_exchange(b);
+    finish_exchange(b);
+  }
 
   virtual void exchange(PatchFields<CellField<double>>& f) = 0;
   virtual void exchange(PatchFields<CellField<Vec3>>& f) = 0;

@@ -80,9 +80,11 @@ std::vector<std::vector<int>> all_to_all_ints(const std::vector<std::vector<int>
 
 MpiHaloExchange::Traffic g_traffic;  // MpiHaloExchange::traffic()
 
-// Sends send_buf[r] to each rank r and receives recv_buf[r] (already sized)
-// from it; messages to this rank are copies.
-void exchange_buffers(int rank, std::vector<std::vector<double>>& send_buf, std::vector<std::vector<double>>& recv_buf) {
+// Posts the sends of send_buf[r] to each rank r and the receives of
+// recv_buf[r] (already sized) from it; the message to this rank is a copy.
+// The buffers must stay in place until the requests complete.
+std::vector<MPI_Request> post_buffers(int rank, std::vector<std::vector<double>>& send_buf,
+                                      std::vector<std::vector<double>>& recv_buf) {
   const int size = static_cast<int>(send_buf.size());
   ++g_traffic.calls;
   std::vector<MPI_Request> req;
@@ -102,8 +104,32 @@ void exchange_buffers(int rank, std::vector<std::vector<double>>& send_buf, std:
               &req.back());
   }
   recv_buf[rank] = send_buf[rank];
+  return req;
+}
+
+// post_buffers, then wait for every message.
+void exchange_buffers(int rank, std::vector<std::vector<double>>& send_buf, std::vector<std::vector<double>>& recv_buf) {
+  std::vector<MPI_Request> req = post_buffers(rank, send_buf, recv_buf);
   MPI_Waitall(static_cast<int>(req.size()), req.data(), MPI_STATUSES_IGNORE);
 }
+
+// One field of a batch as doubles: each held patch's data, the components
+// per entry and the field's plan.
+struct BatchField {
+  std::vector<double*> data;  // per held patch
+  int nc = 1;
+  const MpiHaloExchange::Plan* plan = nullptr;
+  double* at(const Entry& e) const { return data[size_t(e.field)] + e.offset * nc; }
+};
+
+static_assert(sizeof(Vec3) == 3 * sizeof(double), "a Vec3 field is read as 3 doubles per entry");
+
+// The messages of a batch between begin_exchange and finish_exchange.
+struct BatchInFlight {
+  std::vector<BatchField> fields;
+  std::vector<std::vector<double>> sendb, recvb;
+  std::vector<MPI_Request> req;
+};
 
 }  // namespace
 
@@ -298,6 +324,54 @@ void MpiHaloExchange::accumulate_impl(PatchFields<NodeField<T>>& pf) {
       double* v = as_doubles(at(P.copies[r][k]));
       for (int c = 0; c < nc; ++c) v[c] = sendb[r][k * nc + c];
     }
+}
+
+void MpiHaloExchange::begin_exchange(CellHaloBatch& b) {
+  auto fly = std::make_shared<BatchInFlight>();
+  auto add = [&](auto& pf, int nc) {
+    std::vector<int> patches(pf.size());
+    BatchField bf;
+    bf.nc = nc;
+    for (size_t n = 0; n < pf.size(); ++n) {
+      patches[n] = pf.patch_index(n);
+      bf.data.push_back(as_doubles(pf[n].data()[0]));
+    }
+    bf.plan = &plan(false, false, pf.ghost_width(), patches);
+    fly->fields.push_back(std::move(bf));
+  };
+  for (auto* f : b.scalars) add(*f, 1);
+  for (auto* f : b.vectors) add(*f, 3);
+  // Per peer: the fields' owned values in batch order, each in its plan's order.
+  fly->sendb.assign(size_, {});
+  fly->recvb.assign(size_, {});
+  for (int r = 0; r < size_; ++r) {
+    std::size_t n_recv = 0;
+    for (const BatchField& f : fly->fields) {
+      for (const Entry& e : f.plan->send[r]) fly->sendb[r].insert(fly->sendb[r].end(), f.at(e), f.at(e) + f.nc);
+      n_recv += f.plan->recv[r].size() * f.nc;
+    }
+    fly->recvb[r].resize(n_recv);
+  }
+  // Same-rank copies now (their sources are the values at begin).
+  for (const BatchField& f : fly->fields)
+    for (const auto& [ghost, src] : f.plan->local) std::copy(f.at(src), f.at(src) + f.nc, f.at(ghost));
+  fly->req = post_buffers(rank_, fly->sendb, fly->recvb);
+  b.in_flight = std::move(fly);
+}
+
+void MpiHaloExchange::finish_exchange(CellHaloBatch& b) {
+  auto fly = std::static_pointer_cast<BatchInFlight>(b.in_flight);
+  if (!fly) throw std::logic_error("MpiHaloExchange::finish_exchange without begin_exchange");
+  MPI_Waitall(static_cast<int>(fly->req.size()), fly->req.data(), MPI_STATUSES_IGNORE);
+  for (int r = 0; r < size_; ++r) {
+    const double* v = fly->recvb[size_t(r)].data();
+    for (const BatchField& f : fly->fields)
+      for (const Entry& e : f.plan->recv[r]) {
+        std::copy(v, v + f.nc, f.at(e));
+        v += f.nc;
+      }
+  }
+  b.in_flight.reset();
 }
 
 void MpiHaloExchange::exchange(PatchFields<CellField<double>>& f) { exchange_impl(f, false); }

@@ -37,6 +37,11 @@ class MpiHaloExchange final : public HaloExchange {
   void accumulate(PatchFields<NodeField<double>>& f) override;
   void accumulate(PatchFields<NodeField<Vec3>>& f) override;
 
+  // A batch: one message per peer rank for all its fields, sent at begin,
+  // received and unpacked at finish (HaloExchange.h).
+  void begin_exchange(CellHaloBatch& b) override;
+  void finish_exchange(CellHaloBatch& b) override;
+
   // The indices into grid.patches that this rank owns, ascending.
   const std::vector<int>& own_patches() const { return own_; }
 

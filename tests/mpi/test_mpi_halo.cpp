@@ -11,6 +11,7 @@
 #include <cstdint>
 
 #include "core/grid/HaloExchange.h"
+#include "core/grid/Loop.h"
 #include "core/grid/MpiHaloExchange.h"
 #include "core/parallel/Ranks.h"
 
@@ -127,6 +128,53 @@ TEST(MpiHalo, NodeAccumulateEqualsOneProcessBitForBit) {
       SCOPED_TRACE(::testing::Message() << "periodic " << periodic << " ghosts " << gw);
       check<NodeField<double>>(periodic, gw, true);
       check<NodeField<Vec3>>(periodic, gw, true);
+    }
+}
+
+// A batch of three cell fields (two ghost widths, double and Vec3) filled by
+// one begin/finish: the ghosts equal LocalHaloExchange's field by field, bit
+// for bit; the batch is one message round (one call in the traffic counter,
+// at most one message per peer rank, against three calls field by field);
+// owned values overwritten between begin and finish do not reach the ghosts
+// (they were sent at begin). Mutations: unpacking the fields in the reverse
+// order, or packing at finish, fail it.
+TEST(MpiHalo, CellBatchEqualsOneProcessInOneMessageRound) {
+  for (bool periodic : {false, true})
+    for (int gw : {1, 2}) {
+      SCOPED_TRACE(::testing::Message() << "periodic " << periodic << " ghosts " << gw);
+      const Grid g = test_grid(periodic);
+      const Ranks r = world_ranks();
+      std::vector<int> owner(g.patches.size());
+      for (size_t p = 0; p < owner.size(); ++p) owner[p] = int(p) % r.size;
+      MpiHaloExchange mpi(g, owner);
+      LocalHaloExchange local(g);
+      PatchFields<CellField<double>> a_all(g, gw), b_all(g, 1), a(g, gw, mpi.own_patches()), b(g, 1, mpi.own_patches());
+      PatchFields<CellField<Vec3>> v_all(g, gw), v(g, gw, mpi.own_patches());
+      fill(a_all, false), fill(b_all, false), fill(v_all, false), fill(a, false), fill(b, false), fill(v, false);
+      // b differs from a: scale its owned values (the same on both sides).
+      for (auto* pf : {&b_all, &b})
+        for (size_t n = 0; n < pf->size(); ++n)
+          for (size_t e = 0; e < (*pf)[n].size(); ++e) (*pf)[n].data()[e] *= 3.0;
+      local.exchange(a_all), local.exchange(b_all), local.exchange(v_all);
+      const PatchFields<CellField<double>> a_begin = a;  // the owned values at begin
+      const MpiHaloExchange::Traffic t0 = MpiHaloExchange::traffic();
+      CellHaloBatch batch;
+      batch.add(a).add(v).add(b);
+      mpi.begin_exchange(batch);
+      for (size_t n = 0; n < a.size(); ++n)  // work between begin and finish writes owned values
+        for_each_cell_serial(a[n].with_extra(), [&](int i, int j, int k) { a[n](i, j, k) = -1.0; });
+      mpi.finish_exchange(batch);
+      const MpiHaloExchange::Traffic t1 = MpiHaloExchange::traffic();
+      EXPECT_EQ(t1.calls - t0.calls, 1);
+      EXPECT_LE(t1.messages - t0.messages, r.size - 1);
+      // Put the owned values back, then every entry must be the reference's.
+      for (size_t n = 0; n < a.size(); ++n) {
+        const IndexRange own = a[n].with_extra();
+        for_each_cell_serial(own, [&](int i, int j, int k) { a[n](i, j, k) = a_begin[n](i, j, k); });
+      }
+      expect_same(a, a_all);
+      expect_same(b, b_all);
+      expect_same(v, v_all);
     }
 }
 
