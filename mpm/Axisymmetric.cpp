@@ -1,5 +1,6 @@
 #include "mpm/Axisymmetric.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "mpm/shape/ShapeAxisymmetric.h"
@@ -16,6 +17,21 @@ void make_axisymmetric_particles(const Vec3& h, double density, Particles& p) {
     p.volume0[i] = p.volume[i] = V;
     p.mass[i] = density * V;
   }
+}
+
+std::vector<double> axisymmetric_full_node_volumes(const NodeGrid& g) {
+  const double h = g.h[0];
+  std::vector<double> full(std::size_t(std::max(g.n[0], 0)));
+  for (int i = 0; i < g.n[0]; ++i) {
+    const double r = std::abs(g.origin[0] + i * h);
+    double J = r * h;  // r >= h: the whole hat
+    if (r < h) {       // the rising piece clipped at the axis (L = r), the falling piece whole
+      const double L = r;
+      J = 0.5 * r * h + h * h / 6.0 + (r * h * L - 0.5 * (h + r) * L * L + L * L * L / 3.0) / h;
+    }
+    full[std::size_t(i)] = 0.5 * J * g.h[1];
+  }
+  return full;
 }
 
 namespace {

@@ -48,6 +48,20 @@ int axisymmetric_stencil_width(InterpolatorKind kind);
 // the grid (or with r <= 0, or a degenerate CPDI domain), or -1.
 long compute_axisymmetric_stencils(const Particles& p, const NodeGrid& g, InterpolatorKind kind, Stencils& s);
 
+// The volume V_full(i) = sum_p V_p S_gp of a node at r_i = origin_x + i h_r
+// (i = 0 .. n_x - 1) surrounded by material, per radian and per hoop node
+// plane: every axisymmetric interpolator puts S/2 on each of the two hoop
+// planes (not folded), and the body integral of the in-plane weight is
+// int N_i(r) r dr int N_j(z) dz = J(r_i) h_z with
+//   J(r) = int_{max(0, r - h_r)}^{r + h_r} N(s) s ds = r h_r        (r >= h_r)
+//        = r h_r / 2 + h_r^2 / 6 + (r h_r L - (h_r + r) L^2 / 2 + L^3 / 3) / h_r,  L = r  (0 <= r < h_r)
+// (h_r^2 / 6 on the axis), so V_full(i) = J(|r_i|) h_z / 2 (extra nodes at r < 0:
+// their mirror's). Exact for GIMP (S V_p = the domain integral of N); the
+// linear hat's midpoint rule gives it to O(h^2). The node fill of the MUSL/USL
+// choice is phi_g = V_g / V_full (mpm/UpdatedGridVelocity.h): the Cartesian
+// V_g / (h_x h_y h_z) takes a full node at radius r for r / (2 h_z) of one.
+std::vector<double> axisymmetric_full_node_volumes(const NodeGrid& g);
+
 // f_int with the hoop term (overwrites nothing: adds into g.internal_force).
 void axisymmetric_internal_force(const Particles& p, const Stencils& s, NodeGrid& g);
 

@@ -558,6 +558,15 @@ void MpmComponent::advance(double t, double dt, int step) {
     if (musl) {
       musl_velocity_.resize(mats.size());
       const double cell_volume = setup_.grid.dx[0] * setup_.grid.dx[1] * setup_.grid.dx[2];
+      // Axisymmetric: V_g is per radian, so the fill is V_g / V_full(r_g), not V_g / cell_volume
+      // (which called a node at r = 10 h_z with a tenth of its material "half full": USL there
+      // let the cookoff cap's outer surface nodes run away, docs/validation/cookoff.md "Session 25").
+      const std::vector<double>* full_x = nullptr;
+      if (setup_.flags.axisymmetric && !mats.empty()) {
+        if (usl_full_volume_x_.size() != std::size_t(mats.front().grid.n[0]))
+          usl_full_volume_x_ = axisymmetric_full_node_volumes(mats.front().grid);
+        full_x = &usl_full_volume_x_;
+      }
       // The USL fill limits, once per material (a pass over the particles; v and c do not change in this phase).
       std::vector<double> fill_limit(mats.size());
       for (std::size_t i = 0; i < mats.size(); ++i) fill_limit[i] = usl_fill_limit(courant_number(mats[i], dt));
@@ -565,7 +574,7 @@ void MpmComponent::advance(double t, double dt, int step) {
         MpmMaterial& m = mats[i];
         if (!contact && !periodic_.active()) {
           // Only the nodes keep_stable_usl_nodes keeps below (none: USL everywhere; same bits).
-          usl_needed_nodes(m.grid, fill_limit[i], cell_volume, musl_needed_);
+          usl_needed_nodes(m.grid, fill_limit[i], cell_volume, musl_needed_, full_x);
           updated_particle_grid_velocity_at(m.particles, m.stencils, m.grid, dt, musl_needed_, musl_velocity_[i],
                                             band());
         } else {
@@ -584,7 +593,7 @@ void MpmComponent::advance(double t, double dt, int step) {
       if (contact) exchange_momentum(ContactStage::Integrated, t, dt, false);
       for (std::size_t i = 0; i < mats.size(); ++i) {  // v*_g back where USL is stable for the node
         keep_stable_usl_nodes(mats[i].grid, fill_limit[i], cell_volume,
-                              musl_velocity_[i], mats[i].grid.velocity_star);
+                              musl_velocity_[i], mats[i].grid.velocity_star, full_x);
         // The node-by-node choice can pick MUSL at an extra node (little volume)
         // and v*_g at its mirror node (full): the grid BCs again, so that the
         // extra nodes mirror the velocity l_p reads. With it a symmetric run is

@@ -236,6 +236,9 @@ class MpmComponent final : public Component {
   // interpolated contact; the step's a_g is taken against it (see advance()).
   std::vector<std::vector<Vec3>> p2g_velocity_;
   std::vector<unsigned char> musl_needed_;  // scratch: nodes where step 9 keeps v_g^{n+1} (usl_needed_nodes)
+  // Axisymmetric: the full-node volume per node index along r, the fill reference of the
+  // MUSL/USL choice (axisymmetric_full_node_volumes, mpm/Axisymmetric.h); empty otherwise.
+  std::vector<double> usl_full_volume_x_;
   std::vector<std::vector<Vec3>> musl_velocity_;  // per material: v_g^{n+1} of the updated particle velocities (step 9)
   // BndyForce_<face> = -sum f_int over the face's nodes and all materials,
   // BndyContactArea_<face> = sum V_g / h_normal (Vaango's computeInternalForce),

@@ -65,9 +65,17 @@ void updated_particle_grid_velocity(const Particles& p, const Stencils& s, const
 namespace tephra {
 
 void keep_stable_usl_nodes(const NodeGrid& g, double limit, double cell_volume, const std::vector<Vec3>& v_star,
-                           std::vector<Vec3>& v) {
+                           std::vector<Vec3>& v, const std::vector<double>* full_x) {
   // Node by node over the active box (the whole grid in one process), no sums:
   // the same bits for any thread count.
+  if (full_x) {
+    const std::size_t nx = std::size_t(g.n[0]);
+    const double* full = full_x->data();
+    for_each_active_node(g, [&](std::size_t n) {
+      if (g.volume[n] >= limit * full[n % nx]) v[n] = v_star[n];
+    });
+    return;
+  }
   for_each_active_node(g, [&](std::size_t n) {
     if (g.volume[n] >= limit * cell_volume) v[n] = v_star[n];
   });
@@ -77,7 +85,8 @@ void keep_stable_usl_nodes(const NodeGrid& g, double limit, double cell_volume, 
 
 namespace tephra {
 
-std::size_t usl_needed_nodes(const NodeGrid& g, double limit, double cell_volume, std::vector<unsigned char>& needed) {
+std::size_t usl_needed_nodes(const NodeGrid& g, double limit, double cell_volume, std::vector<unsigned char>& needed,
+                             const std::vector<double>* full_x) {
   const std::size_t nodes = g.count();
   // Restricted to the active box (on MPI ranks, NodeGrid.h): 0 outside it
   // (no particle of this rank reaches a node there); in one process every
@@ -90,13 +99,15 @@ std::size_t usl_needed_nodes(const NodeGrid& g, double limit, double cell_volume
   const long nruns = runs.count;
   const std::size_t len = runs.length;
   std::size_t weak = 0;
+  const double* full = full_x ? full_x->data() : nullptr;  // per node index along x (axisymmetric), else cell_volume
+  const std::size_t row = std::size_t(g.n[0]);
   // Threaded over the runs (one run, split over the threads, for the whole
   // grid): a count is exact in any order.
   if (nruns == 1) {
     const long n0 = long(runs.first), n1 = long(runs.first + len);
 #pragma omp parallel for schedule(static) reduction(+ : weak) if (count >= 4096)
     for (long n = n0; n < n1; ++n) {
-      const bool w = !(g.volume[n] >= limit * cell_volume);  // the negation of keep_stable_usl_nodes' test
+      const bool w = !(g.volume[n] >= limit * (full ? full[std::size_t(n) % row] : cell_volume));  // keep_stable_usl_nodes' test negated
       need[n] = w;
       weak += w;
     }
@@ -104,7 +115,7 @@ std::size_t usl_needed_nodes(const NodeGrid& g, double limit, double cell_volume
 #pragma omp parallel for schedule(static) reduction(+ : weak) if (long(runs.nodes()) >= 4096)
     for (long q = 0; q < nruns; ++q)
       for (std::size_t n = runs.begin(q), e = runs.begin(q) + len; n < e; ++n) {
-        const bool w = !(g.volume[n] >= limit * cell_volume);
+        const bool w = !(g.volume[n] >= limit * (full ? full[n % row] : cell_volume));
         need[n] = w;
         weak += w;
       }

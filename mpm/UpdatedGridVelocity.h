@@ -50,7 +50,12 @@ namespace tephra {
 // where phi_g < limit, and on the node planes within 2 extra of each face
 // (the grid BCs set an extra-cell node from its mirror across the face, which
 // then must hold v_g^{n+1} too). Returns the number of nodes with phi_g < limit.
-std::size_t usl_needed_nodes(const NodeGrid& g, double limit, double cell_volume, std::vector<unsigned char>& needed);
+// full_x (may be null): the volume V_full of a node surrounded by material,
+// per node index i along x (g.n[0] entries), used instead of cell_volume:
+// axisymmetric runs, whose V_g is per radian and grows with r_g
+// (axisymmetric_full_node_volumes, mpm/Axisymmetric.h), phi_g = V_g / V_full(i).
+std::size_t usl_needed_nodes(const NodeGrid& g, double limit, double cell_volume, std::vector<unsigned char>& needed,
+                             const std::vector<double>* full_x = nullptr);
 
 // v_g^{n+1} as updated_particle_grid_velocity (no periodic aliases), exact at
 // the nodes with needed[g] != 0; the other nodes hold partial sums. Only the
@@ -67,7 +72,8 @@ inline double usl_fill_limit(double courant) { return 2.0 * courant * courant / 
 // Where phi_g >= limit, v_g = v*_g (Vaango's USL: a well-filled node is stable
 // and keeps USL's accuracy, e.g. one particle per cell); elsewhere v_g stays
 // the updated-particle velocity. `v_star` holds v*_g, `v` the result.
+// full_x: as usl_needed_nodes (null: phi_g = V_g / cell_volume).
 void keep_stable_usl_nodes(const NodeGrid& g, double limit, double cell_volume, const std::vector<Vec3>& v_star,
-                           std::vector<Vec3>& v);
+                           std::vector<Vec3>& v, const std::vector<double>* full_x = nullptr);
 
 }  // namespace tephra
