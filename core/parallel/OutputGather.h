@@ -13,6 +13,14 @@
 // receive nothing, so the frame or archive they assemble is empty
 // (`output_gather_lands_here()` is false there) and must not be used.
 //
+// Session 25 (issue 7 item 4, per-rank output): inside an OutputPerRank
+// scope, which TimeLoop opens around fill_output under mpirun, the gathers
+// do not communicate at all: gather_output returns this rank's `local`,
+// gather_patch_blocks returns this rank's blocks in their places (the other
+// patches' blocks empty). The component marks which part of each grid array
+// it owns (GridFieldArray::pieces, core/io/OutputFrame.h) and every rank
+// writes its own frame file (core/io/RankFrameFile.h).
+//
 // Traffic per process (doubles of field data, the counts of the
 // variable-size gathers not included):
 //   to every rank: sent = n_local (size - 1), received = n_total - n_local
@@ -29,19 +37,36 @@ class OutputToRoot {
   OutputToRoot& operator=(const OutputToRoot&) = delete;
 
  private:
-  bool previous_;
+  int previous_;
 };
+
+// Per-rank output: the gathers keep each rank's own data (see above).
+class OutputPerRank {
+ public:
+  OutputPerRank();
+  ~OutputPerRank();
+  OutputPerRank(const OutputPerRank&) = delete;
+  OutputPerRank& operator=(const OutputPerRank&) = delete;
+
+ private:
+  int previous_;
+};
+
+// True inside an OutputPerRank scope on more than one rank (one rank: the
+// gathers are the identity anyway and the single-file layout is written).
+bool output_per_rank();
 
 // True inside an OutputToRoot scope.
 bool output_gathers_to_root();
 
 // True when this process receives the output gathers: outside a scope every
-// rank, inside it rank 0 only.
+// rank, inside OutputToRoot rank 0 only, inside OutputPerRank every rank (its
+// own part only).
 bool output_gather_lands_here();
 
 // Every rank's `local` concatenated in rank order, on every rank (outside a
 // scope: all_gather) or on rank 0 only (inside: the other ranks get an empty
-// vector). One rank: `local`.
+// vector). One rank, or inside OutputPerRank: `local`.
 std::vector<double> gather_output(const std::vector<double>& local);
 
 // Doubles this process contributed, sent to and received from other ranks in
