@@ -280,11 +280,19 @@ TEST(IoRankFrames, MissingRankFileIsAnErrorNamingIt) {
   } catch (const RuntimeFailure& e) {
     EXPECT_NE(std::string(e.what()).find(gone), std::string::npos) << e.what();
   }
+  // A restart indexes the frames on disk again: the same error.
+  try {
+    OutputWriter again(dir, true);
+    ADD_FAILURE() << "a restart accepted a frame with a missing rank file";
+  } catch (const RuntimeFailure& e) {
+    EXPECT_NE(std::string(e.what()).find(gone), std::string::npos) << e.what();
+  }
   // The index is only written once every rank file is there.
-  OutputWriter w(dir, true);
-  write_rank_frame(dir, rank_part(grid, 20, 0), 0, 2);
+  const std::string fresh = test::scratch_dir("io_rank_frames_missing_index");
+  OutputWriter w(fresh, false);
+  write_rank_frame(fresh, rank_part(grid, 20, 0), 0, 2);
   EXPECT_THROW(w.write_frame_index(20, 0.02, 2), RuntimeFailure);
-  EXPECT_FALSE(fs::exists(dir + "/frames/" + frame_file_name(20)));
+  EXPECT_FALSE(fs::exists(fresh + "/frames/" + frame_file_name(20)));
 }
 
 TEST(IoRankFrames, FreshRunAndRestartRemoveStaleRankFiles) {
