@@ -1,7 +1,8 @@
 #pragma once
 // Where the output gathers deliver (issue 7 item 4, session 23).
 //
-// Under mpirun rank 0 alone writes the frames and checkpoints (Debian's HDF5
+// Under mpirun rank 0 alone writes the checkpoints (session 23; frames: one
+// file per rank since session 25, see OutputPerRank below) (Debian's HDF5
 // is serial: one writer, the same files as a 1-rank run). The components
 // assemble the whole-level arrays of a frame or of the restart state by
 // gathering their patches (ICE: PatchLayout::gather_blocks; MPM: the
