@@ -2,6 +2,7 @@
 // restart state.
 #include <string>
 
+#include "core/io/ArrayBoxes.h"
 #include "core/parallel/OutputGather.h"
 #include "ice/IceComponent.h"
 
@@ -41,6 +42,28 @@ FieldArray empty(FieldArray f) {
   return f;
 }
 
+// Per-rank output (OutputPerRank, session 25): the blocks of the other ranks'
+// patches are empty and left out; `range(p)` is patch p's block and `first`
+// the array's first (i,j,k). Later patches overwrite shared entries (faces),
+// so patch p owns its block minus those of the later patches.
+template <class Range>
+GridFieldArray with_own_pieces(FieldArray a, GridLocation loc, const PatchLayout& layout, const IntVec3& first,
+                               Range range) {
+  GridFieldArray g;
+  g.data = std::move(a);
+  g.location = loc;
+  if (!output_per_rank() || !layout.distributed) return g;  // unmarked: rank 0 writes it whole
+  g.partial = true;
+  std::vector<ArrayBox> boxes;
+  for (const Patch& p : layout.level.patches) {
+    const IndexRange r = range(p);
+    boxes.push_back({r.lo - first, r.hi - first});
+  }
+  for (int p : layout.own)
+    for (const ArrayBox& b : kept_when_later_wins(boxes, static_cast<std::size_t>(p))) g.pieces.push_back(b);
+  return g;
+}
+
 // The cells of the whole level with the extra cells, i fastest (OutputFrame.h).
 // Each patch's cells_with_extra() block comes from the process that holds it
 // (layout.gather_blocks) and is written in level patch order, so every rank
@@ -64,6 +87,7 @@ FieldArray gather(const PatchLayout& layout, const PatchFields<CellField<T>>& f,
   if (!receives_gather(layout)) return empty(out);
   for (std::size_t p = 0; p < g.patches.size(); ++p) {
     const IndexRange r = g.patches[p].cells_with_extra();
+    if (blocks[p].empty()) continue;  // another rank's patch (per-rank output)
     const double* v = blocks[p].data();
     for (int k = r.lo[2]; k < r.hi[2]; ++k)
       for (int j = r.lo[1]; j < r.hi[1]; ++j)
@@ -93,6 +117,7 @@ FieldArray gather_faces(const PatchLayout& layout, const FaceScalars& f, int d, 
   if (!receives_gather(layout)) return empty(out);
   for (std::size_t p = 0; p < g.patches.size(); ++p) {
     const IndexRange r = faces(g.patches[p]);
+    if (blocks[p].empty()) continue;  // another rank's patch (per-rank output)
     const double* v = blocks[p].data();
     for (int k = r.lo[2]; k < r.hi[2]; ++k)
       for (int j = r.lo[1]; j < r.hi[1]; ++j)
@@ -151,7 +176,11 @@ std::set<std::string> IceComponent::known_labels() const {
 void IceComponent::fill_output(const std::set<std::string>& labels, OutputFrame& frame) const {
   const Grid& g = setup_.grid;
   frame.grid = &layout_.level;
-  auto put = [&](const FieldArray& a) { frame.grid_fields.push_back({a, GridLocation::Cell}); };
+  const IntVec3 first = layout_.level.cells_with_extra().lo;
+  auto put = [&](const FieldArray& a) {
+    frame.grid_fields.push_back(with_own_pieces(a, GridLocation::Cell, layout_, first,
+                                                [](const Patch& p) { return p.cells_with_extra(); }));
+  };
   auto want = [&](const char* l) { return labels.count(l) > 0; };
   // Pressure-like fields are shared by the materials: material 0, as Uintah saves them.
   if (want("press_CC")) put(gather(layout_, press_CC_, "press_CC", 0));
@@ -200,7 +229,9 @@ void IceComponent::fill_output(const std::set<std::string>& labels, OutputFrame&
         const std::string label = kFaceLabels[3 * me + d];
         if (!want(label.c_str())) continue;
         const FaceScalars& f = me == 0 ? mats_[m].vel_FC : mats_[m].vel_FCME;
-        frame.grid_fields.push_back({gather_faces(layout_, f, d, label, static_cast<int>(m)), kFace[d]});
+        frame.grid_fields.push_back(with_own_pieces(
+            gather_faces(layout_, f, d, label, static_cast<int>(m)), kFace[d], layout_, IntVec3::Zero(),
+            [d](const Patch& p) { return IndexRange{p.lo, p.hi + IntVec3::Unit(d)}; }));
       }
 }
 

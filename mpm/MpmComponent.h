@@ -142,6 +142,8 @@ class MpmComponent final : public Component {
   // A whole-grid copy of a node array (width doubles per node) on every rank
   // (RankNodeSums::whole; a collective; `data` itself in one process).
   std::vector<double> whole_node_array(const std::vector<double>& data, int width) const;
+  // Per-rank output: marks the nodes of `g` this rank writes (MpmRanks.cpp).
+  void mark_node_pieces(GridFieldArray& g) const;
   // MPMICE's particle scatters in patch order (mpm/PatchBand.h; docs/parallel.md
   // "MPMICE on ranks"): this step's band widened by `extra` nodes beyond the
   // reach of MPM's stencils (a burn's cell shares land one node below the

@@ -130,6 +130,11 @@ void gather_block(ParticleBlock& b) {
   for (FieldArray& f : b.fields) f.values = gather_output(f.values);
 }
 
+std::vector<FieldArray> empty_fields(std::vector<FieldArray> fields) {
+  for (FieldArray& f : fields) f.values.clear();
+  return fields;
+}
+
 std::string prefix(const MpmMaterial& m) { return "mpm.m" + std::to_string(m.index) + "."; }
 
 // Vaango's face names in the BndyForce_<face> / BndyContactArea_<face> labels.
@@ -189,6 +194,8 @@ void MpmComponent::fill_output(const std::set<std::string>& labels, OutputFrame&
       b.fields.push_back(std::move(f));
     }
     if (layout_.distributed) gather_block(b);  // every rank's particles (mpm/MpmRanks.cpp)
+    // Per-rank output without distributed patches: every rank holds them all, rank 0 writes them.
+    else if (output_per_rank() && !world_ranks().is_root()) b = ParticleBlock{m.index, {}, {}, empty_fields(b.fields)};
     sort_by_id(b);
     frame.particles.push_back(std::move(b));
 
@@ -211,6 +218,7 @@ void MpmComponent::fill_output(const std::set<std::string>& labels, OutputFrame&
       // Periodic grids (ghost layers cropped above) are not run on ranks (exit 3).
       if (layout_.distributed && !column.empty())
         gf.data.values = node_sums_.whole(gf.data.values.data(), gf.data.components);
+      mark_node_pieces(gf);  // per-rank output: the nodes this rank writes
       frame.grid_fields.push_back(std::move(gf));
     };
     node("g.mass", g.mass);

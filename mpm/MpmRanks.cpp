@@ -25,6 +25,7 @@
 
 #include "core/base/Errors.h"
 #include "core/base/PhaseTimers.h"
+#include "core/parallel/OutputGather.h"
 #include "core/parallel/Ranks.h"
 #include "mpm/MpmComponent.h"
 #include "mpm/ParticleDeletion.h"
@@ -261,6 +262,16 @@ void MpmComponent::sum_node_doubles(std::vector<double>& v, int width) {
 std::vector<double> MpmComponent::whole_node_array(const std::vector<double>& data, int width) const {
   if (!layout_.distributed) return data;
   return node_sums_.whole(data.data(), width);
+}
+
+// Per-rank output (OutputPerRank, session 25): a rank writes the nodes that
+// RankNodeSums::whole takes from it. Without distributed patches every rank
+// holds the whole array: left unmarked, rank 0 alone writes it
+// (core/io/RankFrameFile.h).
+void MpmComponent::mark_node_pieces(GridFieldArray& g) const {
+  if (!output_per_rank() || !layout_.distributed) return;
+  g.partial = true;
+  g.pieces = node_sums_.output_pieces();
 }
 
 // Entry by entry, the partials of all ranks added in rank order (the same bits on every rank).

@@ -2,6 +2,7 @@
 
 #include <stdexcept>
 
+#include "core/io/ArrayBoxes.h"
 #include "core/parallel/OutputGather.h"
 #include "core/parallel/Ranks.h"
 
@@ -117,6 +118,13 @@ std::vector<double> RankNodeSums::whole(const double* data, int width) const {
     return out;
   }
   const NodeBox& mine = boxes_[std::size_t(rank_)];
+  if (output_per_rank()) {
+    for (int k = mine.lo[2]; k < mine.hi[2]; ++k)
+      for (int j = mine.lo[1]; j < mine.hi[1]; ++j)
+        for (int i = mine.lo[0]; i < mine.hi[0]; ++i)
+          for (std::size_t c = 0; c < w; ++c) out[node_index(i, j, k) * w + c] = data[node_index(i, j, k) * w + c];
+    return out;
+  }
   std::vector<double> local;
   local.reserve(mine.count() * w);
   for (int k = mine.lo[2]; k < mine.hi[2]; ++k)
@@ -139,6 +147,13 @@ std::vector<double> RankNodeSums::whole(const double* data, int width) const {
           for (std::size_t c = 0; c < w; ++c) out[node_index(i, j, k) * w + c] = all[pos++];
   }
   return out;
+}
+
+std::vector<ArrayBox> RankNodeSums::output_pieces() const {
+  std::vector<ArrayBox> boxes;
+  for (const NodeBox& b : boxes_) boxes.push_back({b.lo, b.hi});
+  if (boxes.empty()) return {ArrayBox{IntVec3::Zero(), n_}};  // no boxes set: one process, every node
+  return kept_when_earlier_wins(boxes, std::size_t(rank_));
 }
 
 }  // namespace tephra

@@ -27,6 +27,7 @@
 #include <vector>
 
 #include "core/base/Types.h"
+#include "core/io/OutputFrame.h"
 #include "mpm/NodeBox.h"
 
 namespace tephra {
@@ -58,7 +59,14 @@ class RankNodeSums {
   // collective; for output and the boundary-force sums). Inside an
   // OutputToRoot scope (core/parallel/OutputGather.h) rank 0 alone receives:
   // the other ranks get an empty vector.
+  // Inside an OutputPerRank scope (per-rank output, session 25) no message:
+  // this rank's box copied from `data`, 0 elsewhere; it writes the nodes of
+  // output_pieces() only.
   std::vector<double> whole(const double* data, int width) const;
+
+  // The nodes whole() takes from this rank: its box minus the boxes of the
+  // lower ranks (node offsets, NodeGrid order), as disjoint boxes.
+  std::vector<ArrayBox> output_pieces() const;
 
  private:
   int rank_ = 0;

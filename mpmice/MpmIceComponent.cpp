@@ -152,6 +152,7 @@ void MpmIceComponent::fill_output(const std::set<std::string>& labels, OutputFra
       g.data.material = mpm_->materials()[s].index;
       g.data.components = 1;
       g.data.values = mpm_->whole_node_array(node_temperature_[s], 1);  // from the rank boxes under mpirun
+      mpm_->mark_node_pieces(g);  // per-rank output: the nodes this rank writes
       frame.grid_fields.push_back(std::move(g));
     }
 }

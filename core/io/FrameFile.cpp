@@ -7,12 +7,17 @@
 #include <stdexcept>
 
 #include "core/base/Errors.h"
+#include "core/io/detail/FrameParts.h"
 #include "core/io/detail/H5.h"
+#include "core/io/RankFrameFile.h"
 
 namespace tephra {
 namespace {
-
 const char* kFormat = "tephra-frame-1";
+}  // namespace
+
+// Shared with the per-rank frame files (core/io/detail/FrameParts.h).
+namespace frame_detail {
 
 long long product(const IntVec3& n) { return 1LL * n[0] * n[1] * n[2]; }
 
@@ -80,13 +85,33 @@ int components_from(const std::vector<hsize_t>& dims, size_t scalar_rank) {
   return dims.size() == scalar_rank + 1 ? int(dims.back()) : 1;
 }
 
-void write_grid(hid_t file, const OutputFrame& frame, const std::string& path) {
-  const Grid& grid = *frame.grid;
+h5::Handle write_grid_geometry(hid_t file, const Grid& grid, const std::string& path) {
   h5::Handle g = h5::create_group(file, "grid", path);
   h5::set_attr_doubles(g.id(), "lower", {grid.lower[0], grid.lower[1], grid.lower[2]}, path);
   h5::set_attr_doubles(g.id(), "dx", {grid.dx[0], grid.dx[1], grid.dx[2]}, path);
   h5::set_attr_int64s(g.id(), "cells", to_i64(grid.cells), path);
   h5::set_attr_int64s(g.id(), "extra_cells", to_i64(grid.extra_cells), path);
+  return g;
+}
+
+void read_grid_geometry(hid_t g, Grid& grid, const std::string& path) {
+  grid.lower = to_vec(h5::attr_doubles(g, "lower", path), path);
+  grid.dx = to_vec(h5::attr_doubles(g, "dx", path), path);
+  grid.cells = to_ivec(h5::attr_int64s(g, "cells", path), path);
+  grid.extra_cells = to_ivec(h5::attr_int64s(g, "extra_cells", path), path);
+  grid.upper = grid.lower + grid.dx.cwiseProduct(grid.cells.cast<double>());
+}
+
+GridLocation parse_location(const std::string& centering, const std::string& where) {
+  for (GridLocation l : {GridLocation::Cell, GridLocation::Node, GridLocation::FaceX, GridLocation::FaceY,
+                         GridLocation::FaceZ})
+    if (centering == location_name(l)) return l;
+  throw RuntimeFailure(where + ": unknown centering '" + centering + "'");
+}
+
+void write_grid(hid_t file, const OutputFrame& frame, const std::string& path) {
+  const Grid& grid = *frame.grid;
+  h5::Handle g = write_grid_geometry(file, grid, path);
   std::map<int, h5::Handle> mats;
   for (const GridFieldArray& f : frame.grid_fields) {
     check_label(f.data.label, "grid field");
@@ -148,11 +173,7 @@ void read_grid(hid_t file, SavedFrame& out, bool with_values, const std::string&
                const std::string& path) {
   h5::Handle g = h5::open_group(file, "grid", path);
   out.has_grid = true;
-  out.grid.lower = to_vec(h5::attr_doubles(g.id(), "lower", path), path);
-  out.grid.dx = to_vec(h5::attr_doubles(g.id(), "dx", path), path);
-  out.grid.cells = to_ivec(h5::attr_int64s(g.id(), "cells", path), path);
-  out.grid.extra_cells = to_ivec(h5::attr_int64s(g.id(), "extra_cells", path), path);
-  out.grid.upper = out.grid.lower + out.grid.dx.cwiseProduct(out.grid.cells.cast<double>());
+  read_grid_geometry(g.id(), out.grid, path);
   for (const std::string& mname : h5::children(g.id(), path)) {
     const int material = parse_mat_group(mname, path);
     h5::Handle m = h5::open_group(g.id(), mname, path);
@@ -166,15 +187,7 @@ void read_grid(hid_t file, SavedFrame& out, bool with_values, const std::string&
       s.field.data.label = label;
       s.field.data.material = material;
       s.field.data.components = components_from(dims, 3);
-      const std::string centering = h5::attr_string(set.id(), "centering", where);
-      bool known = false;
-      for (GridLocation l : {GridLocation::Cell, GridLocation::Node, GridLocation::FaceX, GridLocation::FaceY,
-                             GridLocation::FaceZ})
-        if (centering == location_name(l)) {
-          s.field.location = l;
-          known = true;
-        }
-      if (!known) throw RuntimeFailure(where + ": unknown centering '" + centering + "'");
+      s.field.location = parse_location(h5::attr_string(set.id(), "centering", where), where);
       s.first_index = to_ivec(h5::attr_int64s(set.id(), "first_index", where), where);
       s.extent = IntVec3(int(dims[2]), int(dims[1]), int(dims[0]));
       if (with_values && (only.empty() || only == label))
@@ -233,7 +246,9 @@ void read_particles(hid_t file, SavedFrame& out, bool with_values, const std::st
             });
 }
 
-}  // namespace
+}  // namespace frame_detail
+
+using namespace frame_detail;
 
 std::string frame_file_name(int step) {
   char buf[32];
@@ -278,8 +293,12 @@ void write_frame_file(const std::string& path, const OutputFrame& frame) {
 SavedFrame read_frame_file(const std::string& path, bool with_values,
                            const std::string& only_label) {
   h5::Handle file = h5::open_file_readonly(path);
-  if (!h5::has_attr(file.id(), "format") ||
-      h5::attr_string(file.id(), "format", path) != kFormat)
+  const std::string format = h5::has_attr(file.id(), "format") ? h5::attr_string(file.id(), "format", path) : "";
+  if (format == kFrameIndexFormat) {  // a multi-rank frame: the rank files merged
+    file.close();
+    return read_rank_frames(path, with_values, only_label);
+  }
+  if (format != kFormat)
     throw RuntimeFailure(path + ": not a Tephra frame file (format attribute missing or unknown)");
   SavedFrame out;
   std::vector<double> t = h5::attr_doubles(file.id(), "time", path);

@@ -26,6 +26,7 @@ struct SavedGridField {
   GridFieldArray field;                        // values empty for a layout-only read
   IntVec3 first_index = IntVec3::Zero();       // (i,j,k) of the first stored element
   IntVec3 extent = IntVec3::Zero();            // stored elements per direction
+  std::string dataset;                         // a piece of a rank file: its HDF5 path (else empty)
 };
 
 struct SavedParticles {
@@ -57,7 +58,9 @@ std::map<int, std::string> list_frame_files(const std::string& output_dir);
 // {1,3,9}, a label with '/'), RuntimeFailure for I/O failures.
 void write_frame_file(const std::string& path, const OutputFrame& frame);
 
-// Reads a frame file back. With `with_values` false only names, shapes and
+// Reads a frame file back. A multi-rank frame (its t<step>.h5 is the small
+// index of core/io/RankFrameFile.h) is read from its rank files and merged:
+// the same SavedFrame as the single file of the same state, bit for bit. With `with_values` false only names, shapes and
 // geometry are read (for the XDMF index). With `only_label` set, values are
 // read only for fields of that label (and positions and ids only for the
 // particle sets that hold it). RuntimeFailure names the file.

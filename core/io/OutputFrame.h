@@ -50,11 +50,28 @@ inline const char* location_name(GridLocation l) {
   }
 }
 
+// A box of entries of a grid array: offsets lo (inclusive) .. hi (exclusive)
+// from the array's first entry, per direction.
+struct ArrayBox {
+  IntVec3 lo = IntVec3::Zero();
+  IntVec3 hi = IntVec3::Zero();
+  bool empty() const { return (hi.array() <= lo.array()).any(); }
+  long long count() const { return empty() ? 0 : 1LL * (hi[0] - lo[0]) * (hi[1] - lo[1]) * (hi[2] - lo[2]); }
+  bool operator==(const ArrayBox& o) const { return lo == o.lo && hi == o.hi; }
+};
+
 // A field on the whole interior (+ extra cells for Cell) of the grid, stored
 // with i fastest: index = i + ni*(j + nj*k) over the written extent.
+// Per-rank output (session 25, core/parallel/OutputGather.h OutputPerRank):
+// `partial` is set and only the entries inside `pieces` (disjoint boxes) are
+// this rank's to write; the rest of `values` is not used. Every entry of the
+// level is in the pieces of exactly one rank, or of none (then it reads as 0,
+// as the gathered array holds there).
 struct GridFieldArray {
   FieldArray data;
   GridLocation location = GridLocation::Cell;
+  bool partial = false;
+  std::vector<ArrayBox> pieces = {};
 };
 
 struct OutputFrame {

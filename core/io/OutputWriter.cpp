@@ -5,6 +5,7 @@
 
 #include "core/base/Errors.h"
 #include "core/io/FrameFile.h"
+#include "core/io/RankFrameFile.h"
 #include "core/io/Reductions.h"
 #include "core/io/Xdmf.h"
 #include "core/io/detail/Files.h"
@@ -37,8 +38,18 @@ void remove_matching(const fs::path& folder, bool (*ours)(const std::string&)) {
 }
 
 bool is_frame_or_tmp(const std::string& name) {
-  return parse_frame_file_name(name) >= 0 ||
-         (ends_with(name, ".h5.tmp") && parse_frame_file_name(name.substr(0, name.size() - 4)) >= 0);
+  const std::string n = ends_with(name, ".h5.tmp") ? name.substr(0, name.size() - 4) : name;
+  return parse_frame_file_name(n) >= 0 || parse_rank_frame_file_name(n).first >= 0;
+}
+
+// The XDMF element of the frame file `path` (a single file, or the index of
+// rank files), built from the files as written, so it cannot disagree with them.
+std::string frame_xdmf(const std::string& path, int step) {
+  if (!is_frame_index_file(path)) return xdmf_frame_grid(read_frame_file(path, false), "frames/" + frame_file_name(step));
+  std::vector<std::pair<SavedFrame, std::string>> ranks;
+  for (const std::string& f : rank_files_of_index(path))
+    ranks.emplace_back(read_rank_file_layout(f), "frames/" + fs::path(f).filename().string());
+  return xdmf_rank_frame_grid(ranks);
 }
 
 bool is_checkpoint_or_tmp(const std::string& name) {
@@ -47,6 +58,16 @@ bool is_checkpoint_or_tmp(const std::string& name) {
   for (size_t i = 1; i + 3 < n.size(); ++i)
     if (n[i] < '0' || n[i] > '9') return false;
   return n.size() > 4;
+}
+
+// Rank frame files (t<step>.r<rank>.h5) of the steps after `step`.
+void remove_matching_rank_frames(const fs::path& folder, int step) {
+  std::error_code ec;
+  if (!fs::is_directory(folder, ec)) return;
+  std::vector<fs::path> doomed;
+  for (const auto& e : fs::directory_iterator(folder))
+    if (parse_rank_frame_file_name(e.path().filename().string()).first > step) doomed.push_back(e.path());
+  for (const fs::path& p : doomed) files::remove_if_present(p.string());
 }
 
 bool is_tmp(const std::string& name) { return ends_with(name, ".tmp"); }
@@ -89,9 +110,7 @@ OutputWriter::OutputWriter(const std::string& dir, bool restarting) : dir_(dir) 
         files::write_atomic(path, text.substr(0, text.rfind('\n') + 1));
     }
   }
-  for (const auto& [step, path] : list_frame_files(dir_))
-    frame_index_[step] =
-        xdmf_frame_grid(read_frame_file(path, false), "frames/" + frame_file_name(step));
+  for (const auto& [step, path] : list_frame_files(dir_)) frame_index_[step] = frame_xdmf(path, step);
   write_index();
 }
 
@@ -111,7 +130,44 @@ void OutputWriter::write_frame(const OutputFrame& frame) {
   }
   files::sync_and_rename(tmp, path);
   // The index is built from the file as written, so it cannot disagree with it.
-  frame_index_[frame.step] = xdmf_frame_grid(read_frame_file(path, false), "frames/" + name);
+  frame_index_[frame.step] = frame_xdmf(path, frame.step);
+  write_index();
+}
+
+std::string write_rank_frame(const std::string& dir, const OutputFrame& frame, int rank, int ranks) {
+  const std::string path = (fs::path(dir) / "frames" / rank_frame_file_name(frame.step, rank)).string();
+  const std::string tmp = files::tmp_name(path);
+  try {
+    write_rank_frame_file(tmp, frame, rank, ranks);
+  } catch (...) {
+    files::remove_if_present(tmp);
+    throw;
+  }
+  files::sync_and_rename(tmp, path);
+  return path;
+}
+
+void OutputWriter::write_frame_index(int step, double time, int ranks) {
+  const std::string path = (fs::path(dir_) / "frames" / frame_file_name(step)).string();
+  const std::string tmp = files::tmp_name(path);
+  // Every rank file is read (its layout) before the index names it.
+  std::vector<std::pair<SavedFrame, std::string>> layouts;
+  for (int r = 0; r < ranks; ++r) {
+    const std::string name = rank_frame_file_name(step, r);
+    const std::string f = (fs::path(dir_) / "frames" / name).string();
+    std::error_code ec;
+    if (!fs::is_regular_file(f, ec))
+      throw RuntimeFailure(f + ": rank file missing (rank " + std::to_string(r) + " of " + std::to_string(ranks) + ")");
+    layouts.emplace_back(read_rank_file_layout(f), "frames/" + name);
+  }
+  try {
+    write_frame_index_file(tmp, step, time, ranks);
+  } catch (...) {
+    files::remove_if_present(tmp);
+    throw;
+  }
+  files::sync_and_rename(tmp, path);
+  frame_index_[step] = xdmf_rank_frame_grid(layouts);
   write_index();
 }
 
@@ -164,9 +220,11 @@ void OutputWriter::truncate_after(int step, double time) {
     }
   }
   // Frames on disk that were not indexed (e.g. unreadable) but lie past the
-  // restart point go too.
+  // restart point go too, and so do the rank files of those frames (index first:
+  // a frame is never listed without its rank files).
   for (const auto& [s, path] : list_frame_files(dir_))
     if (s > step) files::remove_if_present(path);
+  remove_matching_rank_frames(fs::path(dir_) / "frames", step);
   write_index();
 }
 

@@ -4,7 +4,9 @@
 //   input.ups               the deck with its includes resolved
 //   tephra.xdmf             XDMF index of all frames (ParaView / VisIt open it)
 //   frames/t<step>.h5       one HDF5 file per output time: grid fields on the
-//                           structured grid, particles as point clouds
+//                           structured grid, particles as point clouds; under
+//                           mpirun (session 25) the small index of the rank
+//                           files frames/t<step>.r<rank>.h5 (core/io/RankFrameFile.h)
 //   <Label>.dat             reduction labels: "time value" or "time x y z" rows
 //   checkpoints/            see CheckpointStore
 //   tephra-reductions.txt   the reduction labels written (so that a fresh run
@@ -36,6 +38,11 @@ class OutputWriter {
   // Writes frames/t<step>.h5 and rewrites tephra.xdmf to list every frame.
   void write_frame(const OutputFrame& frame);
 
+  // Multi-rank frame (rank 0, after every rank's write_rank_frame): writes
+  // the index frames/t<step>.h5 last and lists the rank files in tephra.xdmf.
+  // RuntimeFailure naming the file when a rank file is missing or unreadable.
+  void write_frame_index(int step, double time, int ranks);
+
   // Appends one row per label to <label>.dat, full precision (%.17g).
   // A label must be a plain file name (no '/', no whitespace).
   void append_reductions(double time, const std::map<std::string, std::vector<double>>& values);
@@ -53,6 +60,10 @@ class OutputWriter {
   std::map<int, std::string> frame_index_;  // step -> its XDMF <Grid> element
   std::set<std::string> reduction_labels_;  // as listed in tephra-reductions.txt
 };
+
+// One rank's part of a frame (core/io/RankFrameFile.h): frames/t<step>.r<rank>.h5
+// under `dir` (which exists), tmp+rename. Any rank; returns the path.
+std::string write_rank_frame(const std::string& dir, const OutputFrame& frame, int rank, int ranks);
 
 // Checkpoints: checkpoints/c<step>.h5 (step zero-padded to 5+ digits) with
 // every array of a StateArchive, keeping only the newest `cycle` of them.

@@ -67,10 +67,14 @@ std::string mesh_name(const Mesh& m, const Grid& g) {
 
 }  // namespace
 
-std::string xdmf_frame_grid(const SavedFrame& f, const std::string& h5) {
-  std::ostringstream x;
-  x << "      <Grid Name=\"step_" << f.step << "\" GridType=\"Collection\" CollectionType=\"Spatial\">\n"
-    << "        <Time Value=\"" << num(f.time) << "\"/>\n";
+namespace {
+
+// The meshes and particle grids of one file's layout, inside a Spatial
+// collection. `prefix` names the grids of one rank file ("r1_"); a rank file's
+// pieces carry their dataset path (SavedGridField::dataset) and the empty
+// interior mesh is left out for them.
+void frame_content(std::ostringstream& x, const SavedFrame& f, const std::string& h5, const std::string& prefix) {
+  const bool pieces = !prefix.empty();
   if (f.has_grid) {
     // Cell fields of extent n and node fields of extent n+1 live on the same
     // mesh of n cells; fields that include the extra cells get a second mesh.
@@ -97,14 +101,15 @@ std::string xdmf_frame_grid(const SavedFrame& f, const std::string& h5) {
     // The interior mesh first, then any other (in key order).
     std::vector<const Mesh*> order;
     for (const auto& [k, m] : meshes)
-      if (m.first == IntVec3::Zero() && m.cells == f.grid.cells && m.face_shift == IntVec3::Zero())
-        order.insert(order.begin(), &m);
+      if (m.first == IntVec3::Zero() && m.cells == f.grid.cells && m.face_shift == IntVec3::Zero()) {
+        if (!pieces || !m.fields.empty()) order.insert(order.begin(), &m);
+      }
       else if (!m.fields.empty()) order.push_back(&m);
     for (const Mesh* mp : order) {
       const Mesh& m = *mp;
       const Vec3 origin = f.grid.lower + f.grid.dx.cwiseProduct(m.first.cast<double>()) -
                           0.5 * f.grid.dx.cwiseProduct(m.face_shift.cast<double>());
-      x << "        <Grid Name=\"" << mesh_name(m, f.grid) << "\" GridType=\"Uniform\">\n"
+      x << "        <Grid Name=\"" << prefix << mesh_name(m, f.grid) << "\" GridType=\"Uniform\">\n"
         << "          <Topology TopologyType=\"3DCoRectMesh\" Dimensions=\""
         << dims_kji(m.cells + IntVec3::Ones()) << "\"/>\n"
         // ORIGIN_DXDYDZ lists origin and spacing slowest direction first
@@ -125,8 +130,9 @@ std::string xdmf_frame_grid(const SavedFrame& f, const std::string& h5) {
         x << "          <Attribute Name=\"" << escape(d.label) << "_mat" << d.material
           << "\" AttributeType=\"" << attribute_type(d.components) << "\" Center=\""
           << (g->field.location == GridLocation::Node ? "Node" : "Cell") << "\">\n";  // faces: cells of the moved mesh
-        data_item(x, dims, "Float",
-                  h5 + ":/grid/mat" + std::to_string(d.material) + "/" + d.label, "            ");
+        const std::string set =
+            g->dataset.empty() ? "/grid/mat" + std::to_string(d.material) + "/" + d.label : g->dataset;
+        data_item(x, dims, "Float", h5 + ":" + set, "            ");
         x << "          </Attribute>\n";
       }
       x << "        </Grid>\n";
@@ -138,7 +144,7 @@ std::string xdmf_frame_grid(const SavedFrame& f, const std::string& h5) {
     if (p.count == 0) continue;
     const std::string n = std::to_string(p.count);
     const std::string base = h5 + ":/particles/mat" + std::to_string(p.block.material) + "/";
-    x << "        <Grid Name=\"particles_mat" << p.block.material << "\" GridType=\"Uniform\">\n"
+    x << "        <Grid Name=\"" << prefix << "particles_mat" << p.block.material << "\" GridType=\"Uniform\">\n"
       << "          <Topology TopologyType=\"Polyvertex\" NumberOfElements=\"" << n
       << "\" NodesPerElement=\"1\"/>\n"
       << "          <Geometry GeometryType=\"XYZ\">\n";
@@ -157,6 +163,29 @@ std::string xdmf_frame_grid(const SavedFrame& f, const std::string& h5) {
     }
     x << "        </Grid>\n";
   }
+}
+
+void open_frame(std::ostringstream& x, int step, double time) {
+  x << "      <Grid Name=\"step_" << step << "\" GridType=\"Collection\" CollectionType=\"Spatial\">\n"
+    << "        <Time Value=\"" << num(time) << "\"/>\n";
+}
+
+}  // namespace
+
+std::string xdmf_frame_grid(const SavedFrame& f, const std::string& h5) {
+  std::ostringstream x;
+  open_frame(x, f.step, f.time);
+  frame_content(x, f, h5, "");
+  x << "      </Grid>\n";
+  return x.str();
+}
+
+std::string xdmf_rank_frame_grid(const std::vector<std::pair<SavedFrame, std::string>>& ranks) {
+  std::ostringstream x;
+  if (ranks.empty()) return "";
+  open_frame(x, ranks.front().first.step, ranks.front().first.time);
+  for (std::size_t r = 0; r < ranks.size(); ++r)
+    frame_content(x, ranks[r].first, ranks[r].second, "r" + std::to_string(r) + "_");
   x << "      </Grid>\n";
   return x.str();
 }

@@ -7,25 +7,32 @@
 namespace tephra {
 namespace {
 
-bool g_to_root = false;
+// 0: to every rank, 1: to rank 0 (OutputToRoot), 2: kept (OutputPerRank).
+enum Mode { kEvery = 0, kRoot = 1, kPerRank = 2 };
+int g_mode = kEvery;
 OutputGatherTraffic g_traffic;
 
 }  // namespace
 
-OutputToRoot::OutputToRoot() : previous_(g_to_root) { g_to_root = true; }
-OutputToRoot::~OutputToRoot() { g_to_root = previous_; }
+OutputToRoot::OutputToRoot() : previous_(g_mode) { g_mode = kRoot; }
+OutputToRoot::~OutputToRoot() { g_mode = previous_; }
 
-bool output_gathers_to_root() { return g_to_root; }
+OutputPerRank::OutputPerRank() : previous_(g_mode) { g_mode = kPerRank; }
+OutputPerRank::~OutputPerRank() { g_mode = previous_; }
 
-bool output_gather_lands_here() { return !g_to_root || world_ranks().is_root(); }
+bool output_gathers_to_root() { return g_mode == kRoot; }
+
+bool output_per_rank() { return g_mode == kPerRank && world_ranks().size > 1; }
+
+bool output_gather_lands_here() { return g_mode != kRoot || world_ranks().is_root(); }
 
 std::vector<double> gather_output(const std::vector<double>& local) {
   const Ranks r = world_ranks();
-  if (r.size == 1) return local;
+  if (r.size == 1 || g_mode == kPerRank) return local;
   ++g_traffic.calls;
   const long long n = static_cast<long long>(local.size());
   g_traffic.doubles_own += n;
-  if (!g_to_root) {
+  if (g_mode == kEvery) {
     std::vector<double> all = all_gather(local);
     g_traffic.doubles_sent += n * (r.size - 1);
     g_traffic.doubles_received += static_cast<long long>(all.size()) - n;

@@ -1,7 +1,8 @@
 #pragma once
 // Where the output gathers deliver (issue 7 item 4, session 23).
 //
-// Under mpirun rank 0 alone writes the frames and checkpoints (Debian's HDF5
+// Under mpirun rank 0 alone writes the checkpoints (session 23; frames: one
+// file per rank since session 25, see OutputPerRank below) (Debian's HDF5
 // is serial: one writer, the same files as a 1-rank run). The components
 // assemble the whole-level arrays of a frame or of the restart state by
 // gathering their patches (ICE: PatchLayout::gather_blocks; MPM: the
@@ -12,6 +13,14 @@
 // deliver to rank 0 only (MPI_Gatherv): the other ranks send their part and
 // receive nothing, so the frame or archive they assemble is empty
 // (`output_gather_lands_here()` is false there) and must not be used.
+//
+// Session 25 (issue 7 item 4, per-rank output): inside an OutputPerRank
+// scope, which TimeLoop opens around fill_output under mpirun, the gathers
+// do not communicate at all: gather_output returns this rank's `local`,
+// gather_patch_blocks returns this rank's blocks in their places (the other
+// patches' blocks empty). The component marks which part of each grid array
+// it owns (GridFieldArray::pieces, core/io/OutputFrame.h) and every rank
+// writes its own frame file (core/io/RankFrameFile.h).
 //
 // Traffic per process (doubles of field data, the counts of the
 // variable-size gathers not included):
@@ -29,19 +38,36 @@ class OutputToRoot {
   OutputToRoot& operator=(const OutputToRoot&) = delete;
 
  private:
-  bool previous_;
+  int previous_;
 };
+
+// Per-rank output: the gathers keep each rank's own data (see above).
+class OutputPerRank {
+ public:
+  OutputPerRank();
+  ~OutputPerRank();
+  OutputPerRank(const OutputPerRank&) = delete;
+  OutputPerRank& operator=(const OutputPerRank&) = delete;
+
+ private:
+  int previous_;
+};
+
+// True inside an OutputPerRank scope on more than one rank (one rank: the
+// gathers are the identity anyway and the single-file layout is written).
+bool output_per_rank();
 
 // True inside an OutputToRoot scope.
 bool output_gathers_to_root();
 
 // True when this process receives the output gathers: outside a scope every
-// rank, inside it rank 0 only.
+// rank, inside OutputToRoot rank 0 only, inside OutputPerRank every rank (its
+// own part only).
 bool output_gather_lands_here();
 
 // Every rank's `local` concatenated in rank order, on every rank (outside a
 // scope: all_gather) or on rank 0 only (inside: the other ranks get an empty
-// vector). One rank: `local`.
+// vector). One rank, or inside OutputPerRank: `local`.
 std::vector<double> gather_output(const std::vector<double>& local);
 
 // Doubles this process contributed, sent to and received from other ranks in

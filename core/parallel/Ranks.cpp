@@ -105,7 +105,9 @@ std::vector<std::vector<double>> gather_patch_blocks(const std::vector<int>& own
     throw std::invalid_argument("gather_patch_blocks: one block per own patch");
   const Ranks r = world_ranks();
   std::vector<std::vector<double>> all(owner.size());
-  if (r.size == 1) {
+  // One rank, or per-rank output (OutputPerRank, core/parallel/OutputGather.h):
+  // this rank's blocks in their places, no messages.
+  if (r.size == 1 || output_per_rank()) {
     for (std::size_t n = 0; n < own_patches.size(); ++n) all[static_cast<std::size_t>(own_patches[n])] = own_blocks[n];
     return all;
   }

@@ -94,26 +94,43 @@ bool TimeLoop::checkpoint_due() const {
 void TimeLoop::write_output() {
   PhaseTimers::Scope scope(phase_timers(), "output");
   std::set<std::string> labels = archiver_.labels();
-  // Every rank computes the reductions (collectives under mpirun) and takes
-  // part in the frame's gathers; rank 0 alone writes. Since session 23 the
-  // gathers deliver to rank 0 only (OutputToRoot, core/parallel/OutputGather.h):
-  // the frame the other ranks assemble is empty and not used.
+  // Every rank computes the reductions (collectives under mpirun); rank 0
+  // writes the .dat rows. Frames: write_frame_of_state (one file per rank
+  // under mpirun since session 25).
   auto reductions = component_.reductions(labels);
   if (writer_ && !reductions.empty()) writer_->append_reductions(state_.time, reductions);
-  OutputFrame frame;
-  frame.step = static_cast<int>(state_.step);
-  frame.time = state_.time;
-  {
-    OutputToRoot to_root;
-    component_.fill_output(labels, frame);
-  }
-  if (writer_) writer_->write_frame(frame);
+  write_frame_of_state(static_cast<int>(state_.step), labels);
   last_output_step_ = state_.step;
   if (archiver_.output_interval) {
     // Advance to the first output time after now.
     while (time_.init_time + state_.outputs_done * *archiver_.output_interval <= state_.time)
       ++state_.outputs_done;
   }
+}
+
+// The frame of the current state. One rank: frames/t<step>.h5 as always.
+// Under mpirun (session 25, core/io/RankFrameFile.h) the component's gathers
+// keep each rank's own part (OutputPerRank, core/parallel/OutputGather.h):
+// every rank writes frames/t<step>.r<rank>.h5, and after a barrier rank 0
+// writes the index frames/t<step>.h5 and the XDMF entry. Rank 0 receives no
+// frame data.
+void TimeLoop::write_frame_of_state(int step, const std::set<std::string>& labels) {
+  OutputFrame frame;
+  frame.step = step;
+  frame.time = state_.time;
+  const Ranks ranks = world_ranks();
+  if (ranks.size == 1) {
+    component_.fill_output(labels, frame);
+    if (writer_) writer_->write_frame(frame);
+    return;
+  }
+  {
+    OutputPerRank per_rank;
+    component_.fill_output(labels, frame);
+  }
+  write_rank_frame(options_.output_dir, frame, ranks.rank, ranks.size);
+  barrier();  // every rank file is in place before the index names it
+  if (writer_) writer_->write_frame_index(step, state_.time, ranks.size);
 }
 
 void TimeLoop::write_checkpoint() {
@@ -205,16 +222,9 @@ void TimeLoop::step_until_end() {
     show_progress(true);
     if (last_output_step_ != state_.step) {
       try {
-        OutputFrame frame;
-        frame.step = static_cast<int>(state_.step + 1);
-        frame.time = state_.time;
-        {
-          OutputToRoot to_root;
-          component_.fill_output(archiver_.labels(), frame);
-        }
-        if (writer_) writer_->write_frame(frame);
-        log::warning("wrote the last state to " + options_.output_dir + " (frame " +
-                     std::to_string(frame.step) + ")");
+        const int step = static_cast<int>(state_.step + 1);
+        write_frame_of_state(step, archiver_.labels());
+        log::warning("wrote the last state to " + options_.output_dir + " (frame " + std::to_string(step) + ")");
       } catch (const std::exception& e) {
         log::warning(std::string("could not write the last state: ") + e.what());
       }

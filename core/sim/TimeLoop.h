@@ -48,6 +48,7 @@ class TimeLoop {
   double next_timestep() const;
   bool output_due() const;
   bool checkpoint_due() const;
+  void write_frame_of_state(int step, const std::set<std::string>& labels);
   void write_output();
   void write_checkpoint();
   bool finished() const;

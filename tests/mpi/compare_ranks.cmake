@@ -4,8 +4,10 @@
 #   at x = 0.5 on a patch cut, checkpoints every 40 steps.
 #   1. tephra DECK (no mpirun) -> np1;  mpirun -np 2 tephra DECK -> np2.
 #      Every .dat file of np1 must equal np2's byte for byte (rank 0 writes
-#      the ordered global sums), and `tephra extract --step last` of
-#      rho_CC, press_CC, vel_CC must print the same text.
+#      the ordered global sums), and `tephra extract --all-times` of
+#      rho_CC, press_CC, vel_CC must print the same text (every frame; since
+#      session 25 the 2-rank frames are one file per rank plus an index, read
+#      through the index; a missing rank file makes extract fail naming it).
 #   2. Restart 2 -> 1: a copy of np2 restarted by one process from its
 #      checkpoint before the end; 1 -> 2: a copy of np1 restarted by
 #      mpirun -np 2; 2 -> 4: a copy of np2 restarted by mpirun -np 4 (one
@@ -37,13 +39,13 @@ function(expect_same_output a b what)
     endif()
   endforeach()
   foreach(var rho_CC press_CC vel_CC)
-    execute_process(COMMAND ${TEPHRA} extract ${a} --var ${var} --step last OUTPUT_VARIABLE ea RESULT_VARIABLE ra)
-    execute_process(COMMAND ${TEPHRA} extract ${b} --var ${var} --step last OUTPUT_VARIABLE eb RESULT_VARIABLE rb)
+    execute_process(COMMAND ${TEPHRA} extract ${a} --var ${var} --all-times OUTPUT_VARIABLE ea RESULT_VARIABLE ra)
+    execute_process(COMMAND ${TEPHRA} extract ${b} --var ${var} --all-times OUTPUT_VARIABLE eb RESULT_VARIABLE rb)
     if(NOT ra EQUAL 0 OR NOT rb EQUAL 0 OR NOT ea STREQUAL eb OR ea STREQUAL "")
       message(FATAL_ERROR "${what}: extract ${var} differs (exit ${ra}, ${rb})")
     endif()
   endforeach()
-  message(STATUS "${what}: ${n} .dat files and rho_CC, press_CC, vel_CC identical")
+  message(STATUS "${what}: ${n} .dat files and rho_CC, press_CC, vel_CC of every frame identical")
 endfunction()
 
 file(REMOVE_RECURSE ${WORK})
@@ -57,6 +59,33 @@ set(MPI2 ${MPIEXEC} -n 2)
 run(${TEPHRA} ${WORK}/sod4.ups --output ${WORK}/np1 --quiet)
 run(${MPI2} ${TEPHRA} ${WORK}/sod4.ups --output ${WORK}/np2 --quiet)
 expect_same_output(${WORK}/np1 ${WORK}/np2 "1 vs 2 ranks")
+
+# Session 25 (issue 7 item 4): the 2-rank run wrote one frame file per rank
+# (frames/t<step>.r<rank>.h5) and an index per frame; the 1-rank run single
+# files. A missing rank file: `tephra extract` fails, naming it.
+file(GLOB np1_rank_files ${WORK}/np1/frames/t*.r*.h5)
+file(GLOB np2_rank0 ${WORK}/np2/frames/t*.r0.h5)
+file(GLOB np2_rank1 ${WORK}/np2/frames/t*.r1.h5)
+file(GLOB np2_frames ${WORK}/np2/frames/t?????.h5)
+list(LENGTH np2_rank0 n0)
+list(LENGTH np2_rank1 n1)
+list(LENGTH np2_frames nf)
+if(np1_rank_files OR n0 EQUAL 0 OR NOT n0 EQUAL n1 OR NOT n0 EQUAL nf)
+  message(FATAL_ERROR "rank files: np1 has '${np1_rank_files}', np2 has ${n0} rank-0 and ${n1} rank-1 files for ${nf} frames")
+endif()
+file(COPY ${WORK}/np2/ DESTINATION ${WORK}/missing)
+file(GLOB last_rank1 ${WORK}/missing/frames/t*.r1.h5)
+list(SORT last_rank1)
+list(GET last_rank1 -1 gone)
+file(REMOVE ${gone})
+execute_process(COMMAND ${TEPHRA} extract ${WORK}/missing --var press_CC --step last
+                RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+get_filename_component(gone_name ${gone} NAME)
+string(FIND "${err}" "${gone_name}" named)
+if(rc EQUAL 0 OR named EQUAL -1)
+  message(FATAL_ERROR "missing rank file ${gone}: extract exit ${rc}, stderr: ${err}")
+endif()
+message(STATUS "2 ranks: ${n0} frames of one file per rank; missing ${gone_name}: exit ${rc}: ${err}")
 
 file(COPY ${WORK}/np2/ DESTINATION ${WORK}/restart21)
 run(${TEPHRA} --restart ${WORK}/restart21 --quiet)

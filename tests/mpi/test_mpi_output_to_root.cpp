@@ -14,8 +14,9 @@
 //     tests in tests/mpi compare with the whole-level run), and empty on the
 //     other ranks, which receive 0 doubles;
 //   * TimeLoop: a Sod run with output and checkpoints: ranks > 0 receive no
-//     output data, and the frame file rank 0 wrote equals the all-gathered
-//     frame of the same state bit for bit.
+//     output data, and the frame written (since session 25 one file per rank
+//     plus an index; the checkpoint still gathered to rank 0) equals the
+//     all-gathered frame of the same state bit for bit.
 // ctest mpi_cli_sod / mpi_cli_mpm / mpi_cli_mpmice compare the files of a
 // 2-rank `tephra` with the 1-rank files and restart 2 -> 1, 1 -> 2, 2 -> 4.
 #include <gtest/gtest.h>
@@ -201,8 +202,10 @@ TEST(MpiOutputToRoot, MpmIceFrameAndArchiveOnRankZeroEqualTheAllGatheredOnes) {
 TEST(MpiOutputToRoot, TimeLoopWritesOnRankZeroWithoutSendingOutputToOtherRanks) {
   const Ranks r = world_ranks();
   const std::string name = "mpi_output_to_root_np" + std::to_string(r.size);
-  // Only rank 0 may write: the other ranks get a directory that does not exist.
-  const std::string dir = r.is_root() ? test::scratch_dir(name) : "/nonexistent/tephra-rank-output";
+  // Since session 25 every rank writes its own frame file (test_mpi_rank_files.cpp):
+  // one directory for all; checkpoints are still gathered to rank 0.
+  const std::string dir = std::string(TEPHRA_TEST_WORK_DIR) + "/" + name;
+  if (r.is_root()) std::filesystem::remove_all(dir);
   barrier();
   auto deck = load_deck(test::shared_dir() + "/decks/inputs/ICE/riemann_sm.ups");
   test::deck_node(deck->root, {"Grid", "Level", "Box", "patches"}).text = "[4,1,1]";

@@ -11,52 +11,17 @@
 
 #include "core/io/OutputWriter.h"
 #include "tests/support/TestPaths.h"
+#include "tests/support/XdmfCheck.h"
 #include "tests/unit/test_io_sample.h"
 
 using namespace tephra;
 
 namespace {
 
-std::vector<double> numbers(const std::string& text) {
-  std::istringstream in(text);
-  std::vector<double> v;
-  for (double x; in >> x;) v.push_back(x);
-  return v;
-}
+std::vector<double> numbers(const std::string& text) { return test::xdmf_numbers(text); }
 
-std::vector<hsize_t> h5_dims(const std::string& file, const std::string& dataset) {
-  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
-  hid_t f = H5Fopen(file.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
-  if (f < 0) return {};
-  std::vector<hsize_t> dims;
-  hid_t d = H5Dopen2(f, dataset.c_str(), H5P_DEFAULT);
-  if (d >= 0) {
-    hid_t s = H5Dget_space(d);
-    dims.resize(H5Sget_simple_extent_ndims(s));
-    H5Sget_simple_extent_dims(s, dims.data(), nullptr);
-    H5Sclose(s);
-    H5Dclose(d);
-  }
-  H5Fclose(f);
-  return dims;
-}
-
-// Every Format="HDF" DataItem: "file:/path" exists, with the declared dims.
 int check_references(const pugi::xml_node& root, const std::string& dir) {
-  int count = 0;
-  for (const pugi::xpath_node& x : root.select_nodes("//DataItem[@Format='HDF']")) {
-    const std::string ref = x.node().text().get();
-    const size_t colon = ref.find(':');
-    EXPECT_NE(colon, std::string::npos) << ref;
-    const std::vector<hsize_t> dims = h5_dims(dir + "/" + ref.substr(0, colon), ref.substr(colon + 1));
-    std::vector<double> declared = numbers(x.node().attribute("Dimensions").value());
-    EXPECT_EQ(dims.size(), declared.size()) << ref;
-    for (size_t n = 0; n < std::min(dims.size(), declared.size()); ++n)
-      EXPECT_EQ(double(dims[n]), declared[n]) << ref;
-    EXPECT_STREQ(x.node().attribute("Precision").value(), "8");
-    ++count;
-  }
-  return count;
+  return test::check_xdmf_references(root, dir);
 }
 
 pugi::xml_node child_grid(const pugi::xml_node& parent, const std::string& name) {
