@@ -113,25 +113,33 @@ void GridBoundaryConditions::apply(const NodeGrid& g, std::vector<Vec3>& velocit
   // directions: fn(v_extra, v_mirror, d) with the mirror node across the face
   // (the extra nodes lie beyond the face plane, their mirrors inside: no node
   // of one face's visit is both written and read).
-  auto for_extra = [&](int f, auto&& fn) {
+  // wait = false: no barrier after the face (the low face of a symmetry
+  // direction before its high face, below).
+  auto for_extra = [&](int f, auto&& fn, bool wait = true) {
     const int d = f / 2;
     const int a = (d + 1) % 3, b = (d + 2) % 3;
     const int face_plane = (f % 2 == 0) ? g.extra[d] : g.n[d] - 1 - g.extra[d];
     const int dir = (f % 2 == 0) ? -1 : 1;  // outward
     const long span_b = long(box.hi[b] - box.lo[b]);
     const long rows = long(g.extra[d]) * span_b;
-#pragma omp for schedule(static)
-    for (long r = 0; r < rows; ++r) {
+    auto row = [&](long r) {
       const int k = 1 + int(r / span_b), jb = box.lo[b] + int(r % span_b);
       IntVec3 c, m;
       c[d] = face_plane + dir * k;
       m[d] = face_plane - dir * k;
-      if (c[d] < box.lo[d] || c[d] >= box.hi[d]) continue;
+      if (c[d] < box.lo[d] || c[d] >= box.hi[d]) return;
       c[b] = m[b] = jb;
       for (int ja = box.lo[a]; ja < box.hi[a]; ++ja) {
         c[a] = m[a] = ja;
         fn(velocity[g.index(c)], velocity[g.index(m)], d);
       }
+    };
+    if (wait) {
+#pragma omp for schedule(static)
+      for (long r = 0; r < rows; ++r) row(r);
+    } else {
+#pragma omp for schedule(static) nowait
+      for (long r = 0; r < rows; ++r) row(r);
     }
   };
   // Nodes the faces visit (the threading threshold).
@@ -167,13 +175,26 @@ void GridBoundaryConditions::apply(const NodeGrid& g, std::vector<Vec3>& velocit
       if (face[f].kind == FaceVelocityBC::Kind::Symmetry)
         for_face(f, g.n[f / 2] - 1 - 2 * g.extra[f / 2] <= 0, [&](Vec3& v, int d) { v[d] = 0.0; });
 #pragma omp barrier
+    // The mirrors face by face, except that the low face of a direction needs
+    // no barrier before its high face when both are symmetry faces and the
+    // direction has more than 4 extra + 1 node planes: the low face writes
+    // planes [0, extra) from (extra, 2 extra], the high face (n - 1 - extra, n)
+    // from [n - 1 - 2 extra, n - 1 - extra): disjoint. Between directions the
+    // barrier stays (an edge's extra node copies one a direction before wrote).
     if (set_extra_nodes)
       for (int f = 0; f < 6; ++f)
-        if (face[f].kind == FaceVelocityBC::Kind::Symmetry)
-          for_extra(f, [&](Vec3& v, const Vec3& mirror, int d) {
-            v = mirror;
-            v[d] = -mirror[d];
-          });
+        if (face[f].kind == FaceVelocityBC::Kind::Symmetry) {
+          const int d = f / 2;
+          const bool pair_follows =
+              f % 2 == 0 && face[f + 1].kind == FaceVelocityBC::Kind::Symmetry && g.n[d] > 4 * g.extra[d] + 1;
+          for_extra(
+              f,
+              [&](Vec3& v, const Vec3& mirror, int dd) {
+                v = mirror;
+                v[dd] = -mirror[dd];
+              },
+              !pair_follows);
+        }
   }
 }
 
