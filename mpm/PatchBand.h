@@ -100,6 +100,8 @@ class PatchBand {
   void set_ranks(std::vector<int> owner, int me, std::function<std::vector<double>(const std::vector<double>&)> gather);
 
   // sum(gi, s): s the ordered sum (width doubles) at band node gi; the partials are zeroed.
+  // sum is called from several threads at once (one band node each): it must
+  // touch the data of node gi only (or of what gi alone maps to, e.g. its cell).
   void reduce(int width, const std::function<void(std::size_t gi, const double* s)>& sum);
 
   // On ranks: the (pair, values) records this rank sent in the last reduce

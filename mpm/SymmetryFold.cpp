@@ -11,27 +11,96 @@ bool active(const GridBoundaryConditions& bcs, const NodeGrid& g, int f, int dim
 }
 
 // Visits the pairs (extra node e, mirror node m) of face f, k = 1..extra layers,
-// over all nodes of the other two directions: fn(e, m, d).
+// over all nodes of the other two directions: fn(e, m, d). The rows (k, jb)
+// are shared among the threads of an enclosing parallel region (an orphaned
+// `omp for`, with its barrier at the end; outside a parallel region: serial).
+// Within one face the pairs are disjoint and no extra node is a mirror node
+// (e lies beyond the face plane, m inside), so fn(e, m) of one face may run
+// in any order or at once: the same bits for any thread count. Faces stay
+// one after the other (the barrier): a later face reads what an earlier one
+// folded into its extra nodes (SymmetryFold.h). wait = false leaves out the
+// barrier at the end (fold_faces_here: the two faces of one direction).
 template <class Fn>
-void for_pairs(const NodeGrid& g, int f, Fn&& fn) {
+void for_pairs(const NodeGrid& g, int f, Fn&& fn, bool wait = true) {
   const int d = f / 2, a = (d + 1) % 3, b = (d + 2) % 3;
   const int face_plane = (f % 2 == 0) ? g.extra[d] : g.n[d] - 1 - g.extra[d];
   const int out = (f % 2 == 0) ? -1 : 1;
-  for (int k = 1; k <= g.extra[d]; ++k) {
+  // The active box's nodes of the other two directions (the whole grid in one
+  // process); the box is closed under the mirror pairs (MpmComponent::set_node_boxes).
+  const NodeBox box = g.active_box();
+  const long span_b = box.empty() ? 0 : long(box.hi[b] - box.lo[b]);
+  const long rows = long(g.extra[d]) * span_b;
+  auto row = [&](long r) {
+    const int k = 1 + int(r / span_b), jb = box.lo[b] + int(r % span_b);
     IntVec3 e, m;
     e[d] = face_plane + out * k;
     m[d] = face_plane - out * k;
-    if (m[d] < 0 || m[d] >= g.n[d]) continue;  // a domain thinner than the extra layers
-    // The active box's nodes of the other two directions (the whole grid in one
-    // process); the box is closed under the mirror pairs (MpmComponent::set_node_boxes).
-    const NodeBox box = g.active_box();
-    if (box.empty() || e[d] < box.lo[d] || e[d] >= box.hi[d]) continue;
-    for (int jb = box.lo[b]; jb < box.hi[b]; ++jb)
-      for (int ja = box.lo[a]; ja < box.hi[a]; ++ja) {
-        e[a] = m[a] = ja;
-        e[b] = m[b] = jb;
-        fn(g.index(e), g.index(m), d);
-      }
+    if (m[d] < 0 || m[d] >= g.n[d]) return;  // a domain thinner than the extra layers
+    if (e[d] < box.lo[d] || e[d] >= box.hi[d]) return;
+    e[b] = m[b] = jb;
+    for (int ja = box.lo[a]; ja < box.hi[a]; ++ja) {
+      e[a] = m[a] = ja;
+      fn(g.index(e), g.index(m), d);
+    }
+  };
+  if (wait) {
+#pragma omp for schedule(static)
+    for (long r = 0; r < rows; ++r) row(r);
+  } else {
+#pragma omp for schedule(static) nowait
+    for (long r = 0; r < rows; ++r) row(r);
+  }
+}
+
+// fold(e, m, d) over the pairs of every active face, inside a parallel region
+// (or serially outside one). Face after face, except that the low face of a
+// direction needs no barrier before its high face when both are folded and
+// the direction has more than 4 extra + 1 node planes: the low face reads
+// planes [0, extra) and writes (extra, 2 extra], the high face reads
+// (n - 1 - extra, n) and writes [n - 1 - 2 extra, n - 1 - extra): disjoint
+// then. Between directions the barrier stays (the edges: a later direction
+// reads extra nodes an earlier one wrote).
+template <class Fold>
+void fold_faces_here(const GridBoundaryConditions& bcs, const NodeGrid& g, int dims, Fold&& fold) {
+  for (int f = 0; f < 6; ++f) {
+    if (!active(bcs, g, f, dims)) continue;
+    const int d = f / 2;
+    const bool pair_follows = f % 2 == 0 && active(bcs, g, f + 1, dims) && g.n[d] > 4 * g.extra[d] + 1;
+    for_pairs(g, f, fold, !pair_follows);
+  }
+}
+
+// Pair nodes of the active faces (the threading threshold of fold_faces).
+long pair_nodes(const GridBoundaryConditions& bcs, const NodeGrid& g, int dims);
+
+// fold_faces_here in its own parallel region, threaded when there are enough pairs.
+template <class Fold>
+void fold_faces(const GridBoundaryConditions& bcs, const NodeGrid& g, int dims, Fold&& fold) {
+  const long pairs = pair_nodes(bcs, g, dims);
+  if (pairs == 0) return;
+#pragma omp parallel if (pairs >= 4096)
+  fold_faces_here(bcs, g, dims, fold);
+}
+
+// fn(gi) for every node of the active box, shared among the threads of an
+// enclosing parallel region (node-wise: the same bits for any split), with
+// the loop's barrier at the end.
+template <class Fn>
+void active_nodes_here(const NodeGrid& g, Fn&& fn) {
+  const NodeRuns r = node_runs(g);
+  if (r.count == 1) {
+    const long len = long(r.length);
+    const std::size_t first = r.first;
+#pragma omp for schedule(static)
+    for (long n = 0; n < len; ++n) fn(first + std::size_t(n));
+  } else {
+    const long runs = r.count;
+    const std::size_t len = r.length;
+#pragma omp for schedule(static)
+    for (long q = 0; q < runs; ++q) {
+      const std::size_t b = r.begin(q);
+      for (std::size_t gi = b; gi < b + len; ++gi) fn(gi);
+    }
   }
 }
 
@@ -51,11 +120,27 @@ Mat3 reflect(const Mat3& s, int d) {  // R s R, R = I - 2 e_d e_d^T
 }
 double reflect(double s, int) { return s; }
 
+long pair_nodes(const GridBoundaryConditions& bcs, const NodeGrid& g, int dims) {
+  const NodeBox box = g.active_box();
+  if (box.empty()) return 0;
+  long n = 0;
+  for (int f = 0; f < 6; ++f)
+    if (active(bcs, g, f, dims)) {
+      const int d = f / 2;
+      n += long(g.extra[d]) * (box.hi[(d + 1) % 3] - box.lo[(d + 1) % 3]) * (box.hi[(d + 2) % 3] - box.lo[(d + 2) % 3]);
+    }
+  return n;
+}
+
+// q_m += R q_e: the extra node keeps its own sums (the BCs set its velocity).
 template <class T>
-void fold_field(const NodeGrid& g, int f, std::vector<T>& q) {
-  for_pairs(g, f, [&](std::size_t e, std::size_t m, int d) {
-    q[m] += reflect(q[e], d);  // the extra node keeps its own sums (the BCs set its velocity)
-  });
+void fold_pair(std::vector<T>& q, std::size_t e, std::size_t m, int d) {
+  q[m] += reflect(q[e], d);
+}
+
+template <class T>
+void fold_field(const GridBoundaryConditions& bcs, const NodeGrid& g, int dims, std::vector<T>& q) {
+  fold_faces(bcs, g, dims, [&](std::size_t e, std::size_t m, int d) { fold_pair(q, e, m, d); });
 }
 
 }  // namespace
@@ -65,38 +150,39 @@ void fold_symmetry_particle_sums(const GridBoundaryConditions& bcs, NodeGrid& g,
   for (int f = 0; f < 6; ++f) any = any || active(bcs, g, f, dims);
   if (!any) return;
   const bool stress = !g.stress.empty();  // NodeGrid::node_stress
-  // Node-wise loops over the active box, threaded: the same bits for any thread count.
-  for_each_active_node(g, [&](std::size_t n) {  // extensive sums
-    g.velocity[n] *= g.mass[n];
-    if (stress) g.stress[n] *= g.volume[n];
-  });
-  for (int f = 0; f < 6; ++f) {
-    if (!active(bcs, g, f, dims)) continue;
-    fold_field(g, f, g.mass);
-    fold_field(g, f, g.volume);
-    fold_field(g, f, g.velocity);
-    if (stress) fold_field(g, f, g.stress);
-    fold_field(g, f, g.external_force);
+  // One parallel region: the node-wise products, the folds, the quotients
+  // (each loop node-wise or pair-wise: the same bits for any thread count).
+#pragma omp parallel if (long(g.count()) >= 4096)
+  {
+    active_nodes_here(g, [&](std::size_t n) {  // extensive sums
+      g.velocity[n] *= g.mass[n];
+      if (stress) g.stress[n] *= g.volume[n];
+    });
+    // The five fields of a pair in one visit (they are independent arrays).
+    fold_faces_here(bcs, g, dims, [&](std::size_t e, std::size_t m, int d) {
+      fold_pair(g.mass, e, m, d);
+      fold_pair(g.volume, e, m, d);
+      fold_pair(g.velocity, e, m, d);
+      if (stress) fold_pair(g.stress, e, m, d);
+      fold_pair(g.external_force, e, m, d);
+    });
+    active_nodes_here(g, [&](std::size_t n) {
+      if (g.mass[n] > 0.0) g.velocity[n] /= g.mass[n];
+      if (stress && g.volume[n] > 0.0) g.stress[n] /= g.volume[n];
+    });
   }
-  for_each_active_node(g, [&](std::size_t n) {
-    if (g.mass[n] > 0.0) g.velocity[n] /= g.mass[n];
-    if (stress && g.volume[n] > 0.0) g.stress[n] /= g.volume[n];
-  });
 }
 
 void fold_symmetry_scalar(const GridBoundaryConditions& bcs, const NodeGrid& g, std::vector<double>& q) {
-  for (int f = 0; f < 6; ++f)
-    if (active(bcs, g, f)) fold_field(g, f, q);
+  fold_field(bcs, g, 3, q);
 }
 
 void fold_symmetry_vectors(const GridBoundaryConditions& bcs, const NodeGrid& g, std::vector<Vec3>& v, int dims) {
-  for (int f = 0; f < 6; ++f)
-    if (active(bcs, g, f, dims)) fold_field(g, f, v);
+  fold_field(bcs, g, dims, v);
 }
 
 void fold_symmetry_internal_force(const GridBoundaryConditions& bcs, NodeGrid& g, int dims) {
-  for (int f = 0; f < 6; ++f)
-    if (active(bcs, g, f, dims)) fold_field(g, f, g.internal_force);
+  fold_field(bcs, g, dims, g.internal_force);
 }
 
 void fold_symmetry_velocity(const GridBoundaryConditions& bcs, const NodeGrid& g, std::vector<Vec3>& velocity,
@@ -105,13 +191,15 @@ void fold_symmetry_velocity(const GridBoundaryConditions& bcs, const NodeGrid& g
   for (int f = 0; f < 6; ++f) any = any || active(bcs, g, f, dims);
   if (!any) return;
   // velocity = P / m_folded with P the unfolded momentum sum: P = velocity m_folded.
-  // Node-wise loops over the active box, threaded: the same bits for any thread count.
-  for_each_active_node(g, [&](std::size_t n) { velocity[n] *= g.mass[n]; });
-  for (int f = 0; f < 6; ++f)
-    if (active(bcs, g, f, dims)) fold_field(g, f, velocity);
-  for_each_active_node(g, [&](std::size_t n) {
-    velocity[n] = g.mass[n] > 0.0 ? Vec3(velocity[n] / g.mass[n]) : Vec3::Zero();
-  });
+  // One parallel region; node-wise and pair-wise loops: the same bits for any thread count.
+#pragma omp parallel if (long(g.count()) >= 4096)
+  {
+    active_nodes_here(g, [&](std::size_t n) { velocity[n] *= g.mass[n]; });
+    fold_faces_here(bcs, g, dims, [&](std::size_t e, std::size_t m, int d) { fold_pair(velocity, e, m, d); });
+    active_nodes_here(g, [&](std::size_t n) {
+      velocity[n] = g.mass[n] > 0.0 ? Vec3(velocity[n] / g.mass[n]) : Vec3::Zero();
+    });
+  }
 }
 
 }  // namespace tephra

@@ -121,4 +121,19 @@ void ScatterOrder::sort_blocks_by_id(const long long* id) {
   displaced = moved;
 }
 
+std::uint32_t ScatterOrder::run_start(int c, int u, int T) const {
+  const std::uint32_t* first = block.data() + colour[std::size_t(c)];
+  const std::uint32_t* last = block.data() + colour[std::size_t(c) + 1];
+  if (u <= 0) return *first;
+  if (u >= T) return *last;
+  const std::size_t p0 = *first, n = std::size_t(*last) - p0;
+  const std::size_t target = p0 + n * std::size_t(u) / std::size_t(T);
+  // The first block start >= target, or the one before it when that is nearer
+  // (a tie: the lower). first < last: a colour's starts end with the next
+  // colour's first start (or np), and *first <= target <= *last.
+  const std::uint32_t* at = std::lower_bound(first, last + 1, std::uint32_t(target));
+  if (at > first && target - std::size_t(at[-1]) <= std::size_t(*at) - target) --at;
+  return *at;
+}
+
 }  // namespace tephra

@@ -12,6 +12,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstdlib>
 #include <map>
 #include <random>
 #include <set>
@@ -200,6 +201,96 @@ TEST(MpmScatterOrder, SortBlocksByIdIsTheStableSortPerBlock) {
     check_sort_blocks(sorted_keys, shuffled, th);    // identity, every block to sort
     check_sort_blocks(random_keys, ascending, th);   // displaced, blocks ascending
     check_sort_blocks(random_keys, shuffled, th);    // displaced, blocks to sort
+  }
+}
+
+// ScatterOrder::run_start, the threads' split of a colour (session 25). With
+// the colour's block starts s_0 < s_1 < ... < s_B (s_B its end) and n
+// particles, thread u of T runs [R_u, R_{u+1}) with R_0 = s_0, R_T = s_B and,
+// for 0 < u < T, R_u the start nearest to t_u = s_0 + floor(n u / T) (a tie:
+// the lower). Claims: (1) the runs tile the colour (every slot, hence every
+// block, in exactly one run: R_u non-decreasing, from s_0 to s_B); (2) each
+// R_u is a block start; (3) |R_u - t_u| = min_k |s_k - t_u| (nearest); (4)
+// for T = 2 the longer run exceeds n/2 by at most half the block holding
+// t_1, plus 1/2 for the floor.
+void check_runs(const ScatterOrder& o) {
+  for (int c = 0; c < 4; ++c) {
+    const std::vector<std::uint32_t> starts(o.block.begin() + o.colour[c], o.block.begin() + o.colour[c + 1] + 1);
+    const std::size_t s0 = starts.front(), n = starts.back() - s0;
+    for (int T = 1; T <= 5; ++T) {
+      EXPECT_EQ(o.run_start(c, 0, T), s0);
+      EXPECT_EQ(o.run_start(c, T, T), starts.back());
+      for (int u = 1; u <= T; ++u) EXPECT_LE(o.run_start(c, u - 1, T), o.run_start(c, u, T)) << c << " " << u << "/" << T;
+      for (int u = 1; u < T; ++u) {
+        const std::uint32_t R = o.run_start(c, u, T);
+        EXPECT_TRUE(std::binary_search(starts.begin(), starts.end(), R)) << "not a block start";
+        const long target = long(s0 + n * std::size_t(u) / std::size_t(T));
+        long best = -1, best_d = -1;
+        for (std::uint32_t st : starts)  // the first of the nearest (ascending starts: a tie keeps the lower)
+          if (best_d < 0 || std::labs(long(st) - target) < best_d) best = st, best_d = std::labs(long(st) - target);
+        EXPECT_EQ(long(R), best) << "colour " << c << " u " << u << "/" << T << " target " << target;
+      }
+    }
+    // T = 2: the balance bound.
+    const std::size_t target = s0 + n / 2;
+    std::size_t holding = 0;  // the block holding the target (0 when the target is a start)
+    for (std::size_t k = 0; k + 1 < starts.size(); ++k)
+      if (starts[k] < target && target < starts[k + 1]) holding = starts[k + 1] - starts[k];
+    const std::size_t R = o.run_start(c, 1, 2);
+    const double longer = double(std::max(R - s0, starts.back() - R));
+    EXPECT_LE(longer, 0.5 * double(n) + 0.5 * double(holding) + 0.5) << "colour " << c;
+  }
+}
+
+TEST(MpmScatterOrder, RunStartsAreTheNearestBlockStarts) {
+  // Hand-made: colour 0 blocks of 55, 20, 45 particles (starts 0, 55, 75; end
+  // 120); T = 2: target 60, nearest start 55 (the first start >= 60, 75, gave
+  // runs of 75 and 45); colour 1 empty; colour 2 one block of 7; colour 3
+  // blocks 10, 10 (target 127 + 10 = 137 is a start: runs of 10 and 10).
+  ScatterOrder o;
+  o.block = {0, 55, 75, 120, 127, 137, 147};  // the last entry: np
+  o.colour = {0, 3, 3, 4, 6};
+  o.particles = 147;
+  o.index.resize(147);
+  for (std::uint32_t j = 0; j < 147; ++j) o.index[j] = j;
+  EXPECT_EQ(o.run_start(0, 1, 2), 55u);
+  EXPECT_EQ(o.run_start(1, 1, 2), 120u);  // empty colour: both runs empty
+  EXPECT_EQ(o.run_start(2, 1, 2), 120u);  // one block: target 123.5 -> 123, nearer 120 than 127
+  EXPECT_EQ(o.run_start(3, 1, 2), 137u);
+  // A tie: blocks 50, 20, 50 (starts 0, 50, 70; end 120): target 60, 50 and 70 at 10: the lower.
+  ScatterOrder tie;
+  tie.block = {0, 50, 70, 120};
+  tie.colour = {0, 3, 3, 3, 3};
+  tie.particles = 120;
+  EXPECT_EQ(tie.run_start(0, 1, 2), 50u);
+  check_runs(o);
+  check_runs(tie);
+  // Random block sizes (1 .. 2000, some colours with one block), and the
+  // orders of the cloud's stencils (linear, gimp).
+  std::mt19937 rng(25);
+  for (int trial = 0; trial < 200; ++trial) {
+    ScatterOrder r;
+    std::uint32_t at = 0;
+    for (int c = 0; c < 4; ++c) {
+      r.colour[std::size_t(c)] = std::uint32_t(r.block.size());
+      const int blocks = int(rng() % (trial % 7 == 0 ? 2 : 40));
+      for (int b = 0; b < blocks; ++b) {
+        r.block.push_back(at);
+        at += 1 + std::uint32_t(rng() % 2000);
+      }
+    }
+    r.colour[4] = std::uint32_t(r.block.size());
+    r.block.push_back(at);
+    r.particles = at;
+    check_runs(r);
+  }
+  Cloud cloud;
+  Stencils s;
+  for (InterpolatorKind k : {InterpolatorKind::Linear, InterpolatorKind::Gimp}) {
+    InterpolatorSpec spec;
+    spec.kind = k;
+    ASSERT_TRUE(compute_axis_stencils(cloud.p, cloud.g, spec, s));
+    check_runs(s.order);
   }
 }
 
