@@ -34,6 +34,7 @@
 #include "core/sim/TimeLoop.h"
 #include "mpmice/ComponentFactory.h"
 #include "tests/support/IceRuns.h"
+#include "tests/support/PatchedRuns.h"
 #include "tests/support/TestPaths.h"
 
 namespace tephra {
@@ -101,27 +102,7 @@ TEST(MpiOutputToRoot, GatherOutputDeliversToRankZeroOnlyInsideTheScope) {
   }
 }
 
-struct Run {
-  std::unique_ptr<Deck> deck;
-  std::unique_ptr<Component> c;
-  double t = 0;
-};
-
-Run start(const std::string& path, const std::string& patches, int steps) {
-  Run r;
-  r.deck = load_deck(path);
-  test::deck_node(r.deck->root, {"Grid", "Level", "Box", "patches"}).text = patches;
-  r.deck->root.finalize_parents();
-  r.c = make_component(*r.deck);
-  r.c->initialize();
-  const TimeParameters tp = read_time_parameters(r.deck->root.require_child("Time"));
-  for (int s = 1; s <= steps; ++s) {
-    const double dt = std::min(tp.delt_max, tp.timestep_multiplier * r.c->stable_timestep());
-    r.c->advance(r.t, dt, s);
-    r.t += dt;
-  }
-  return r;
-}
+using Run = test::PatchedRun;
 
 void expect_same_frames(const OutputFrame& a, const OutputFrame& b) {
   ASSERT_EQ(a.particles.size(), b.particles.size());
@@ -153,7 +134,7 @@ long long frame_doubles(const OutputFrame& f) {
 
 void check_component(const std::string& name, const std::string& path, const std::string& patches, int steps) {
   const Ranks r = world_ranks();
-  Run run = start(path, patches, steps);
+  Run run = test::start_patched_run(path, patches, steps);
   const std::set<std::string> labels = run.c->known_labels();
   OutputFrame every, root;
   StateArchive a_every, a_root;

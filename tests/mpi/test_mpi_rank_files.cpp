@@ -34,6 +34,7 @@
 #include "core/sim/TimeLoop.h"
 #include "mpmice/ComponentFactory.h"
 #include "tests/support/IceRuns.h"
+#include "tests/support/PatchedRuns.h"
 #include "tests/support/TestPaths.h"
 #include "tests/support/XdmfCheck.h"
 
@@ -44,27 +45,7 @@ bool same_bits(const std::vector<double>& a, const std::vector<double>& b) {
   return a.size() == b.size() && (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(double)) == 0);
 }
 
-struct Run {
-  std::unique_ptr<Deck> deck;
-  std::unique_ptr<Component> c;
-  double t = 0;
-};
-
-Run start(const std::string& path, const std::string& patches, int steps) {
-  Run r;
-  r.deck = load_deck(path);
-  test::deck_node(r.deck->root, {"Grid", "Level", "Box", "patches"}).text = patches;
-  r.deck->root.finalize_parents();
-  r.c = make_component(*r.deck);
-  r.c->initialize();
-  const TimeParameters tp = read_time_parameters(r.deck->root.require_child("Time"));
-  for (int s = 1; s <= steps; ++s) {
-    const double dt = std::min(tp.delt_max, tp.timestep_multiplier * r.c->stable_timestep());
-    r.c->advance(r.t, dt, s);
-    r.t += dt;
-  }
-  return r;
-}
+using Run = test::PatchedRun;
 
 // The frame read back from the rank files equals the all-gathered frame.
 void expect_saved_equals(const SavedFrame& saved, const OutputFrame& every, const std::string& name) {
@@ -127,7 +108,7 @@ void expect_xdmf_names_rank_files(const std::string& dir, const std::vector<int>
 
 void check_component(const std::string& name, const std::string& path, const std::string& patches, int steps) {
   const Ranks r = world_ranks();
-  Run run = start(path, patches, steps);
+  Run run = test::start_patched_run(path, patches, steps);
   std::set<std::string> labels = run.c->known_labels();
   OutputFrame every, mine;
   run.c->fill_output(labels, every);  // gathered to every rank
