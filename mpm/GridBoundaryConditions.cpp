@@ -5,6 +5,7 @@
 #include <string>
 
 #include "core/deck/DeckNode.h"
+#include "mpm/FaceMirrorPairs.h"
 
 namespace tephra {
 
@@ -116,31 +117,7 @@ void GridBoundaryConditions::apply(const NodeGrid& g, std::vector<Vec3>& velocit
   // wait = false: no barrier after the face (the low face of a symmetry
   // direction before its high face, below).
   auto for_extra = [&](int f, auto&& fn, bool wait = true) {
-    const int d = f / 2;
-    const int a = (d + 1) % 3, b = (d + 2) % 3;
-    const int face_plane = (f % 2 == 0) ? g.extra[d] : g.n[d] - 1 - g.extra[d];
-    const int dir = (f % 2 == 0) ? -1 : 1;  // outward
-    const long span_b = long(box.hi[b] - box.lo[b]);
-    const long rows = long(g.extra[d]) * span_b;
-    auto row = [&](long r) {
-      const int k = 1 + int(r / span_b), jb = box.lo[b] + int(r % span_b);
-      IntVec3 c, m;
-      c[d] = face_plane + dir * k;
-      m[d] = face_plane - dir * k;
-      if (c[d] < box.lo[d] || c[d] >= box.hi[d]) return;
-      c[b] = m[b] = jb;
-      for (int ja = box.lo[a]; ja < box.hi[a]; ++ja) {
-        c[a] = m[a] = ja;
-        fn(velocity[g.index(c)], velocity[g.index(m)], d);
-      }
-    };
-    if (wait) {
-#pragma omp for schedule(static)
-      for (long r = 0; r < rows; ++r) row(r);
-    } else {
-#pragma omp for schedule(static) nowait
-      for (long r = 0; r < rows; ++r) row(r);
-    }
+    for_face_mirror_pairs(g, f, [&](std::size_t e, std::size_t m, int d) { fn(velocity[e], velocity[m], d); }, wait);
   };
   // Nodes the faces visit (the threading threshold).
   long visits = 0;

@@ -1,5 +1,6 @@
 #include "mpm/SymmetryFold.h"
 
+#include "mpm/FaceMirrorPairs.h"
 #include "mpm/NodeRuns.h"
 
 namespace tephra {
@@ -10,47 +11,6 @@ bool active(const GridBoundaryConditions& bcs, const NodeGrid& g, int f, int dim
   return f / 2 < dims && bcs.set_extra_nodes && bcs.face[f].kind == FaceVelocityBC::Kind::Symmetry && g.extra[f / 2] > 0;
 }
 
-// Visits the pairs (extra node e, mirror node m) of face f, k = 1..extra layers,
-// over all nodes of the other two directions: fn(e, m, d). The rows (k, jb)
-// are shared among the threads of an enclosing parallel region (an orphaned
-// `omp for`, with its barrier at the end; outside a parallel region: serial).
-// Within one face the pairs are disjoint and no extra node is a mirror node
-// (e lies beyond the face plane, m inside), so fn(e, m) of one face may run
-// in any order or at once: the same bits for any thread count. Faces stay
-// one after the other (the barrier): a later face reads what an earlier one
-// folded into its extra nodes (SymmetryFold.h). wait = false leaves out the
-// barrier at the end (fold_faces_here: the two faces of one direction).
-template <class Fn>
-void for_pairs(const NodeGrid& g, int f, Fn&& fn, bool wait = true) {
-  const int d = f / 2, a = (d + 1) % 3, b = (d + 2) % 3;
-  const int face_plane = (f % 2 == 0) ? g.extra[d] : g.n[d] - 1 - g.extra[d];
-  const int out = (f % 2 == 0) ? -1 : 1;
-  // The active box's nodes of the other two directions (the whole grid in one
-  // process); the box is closed under the mirror pairs (MpmComponent::set_node_boxes).
-  const NodeBox box = g.active_box();
-  const long span_b = box.empty() ? 0 : long(box.hi[b] - box.lo[b]);
-  const long rows = long(g.extra[d]) * span_b;
-  auto row = [&](long r) {
-    const int k = 1 + int(r / span_b), jb = box.lo[b] + int(r % span_b);
-    IntVec3 e, m;
-    e[d] = face_plane + out * k;
-    m[d] = face_plane - out * k;
-    if (m[d] < 0 || m[d] >= g.n[d]) return;  // a domain thinner than the extra layers
-    if (e[d] < box.lo[d] || e[d] >= box.hi[d]) return;
-    e[b] = m[b] = jb;
-    for (int ja = box.lo[a]; ja < box.hi[a]; ++ja) {
-      e[a] = m[a] = ja;
-      fn(g.index(e), g.index(m), d);
-    }
-  };
-  if (wait) {
-#pragma omp for schedule(static)
-    for (long r = 0; r < rows; ++r) row(r);
-  } else {
-#pragma omp for schedule(static) nowait
-    for (long r = 0; r < rows; ++r) row(r);
-  }
-}
 
 // fold(e, m, d) over the pairs of every active face, inside a parallel region
 // (or serially outside one). Face after face, except that the low face of a
@@ -66,7 +26,7 @@ void fold_faces_here(const GridBoundaryConditions& bcs, const NodeGrid& g, int d
     if (!active(bcs, g, f, dims)) continue;
     const int d = f / 2;
     const bool pair_follows = f % 2 == 0 && active(bcs, g, f + 1, dims) && g.n[d] > 4 * g.extra[d] + 1;
-    for_pairs(g, f, fold, !pair_follows);
+    for_face_mirror_pairs(g, f, fold, !pair_follows);
   }
 }
 
