@@ -18,6 +18,12 @@ namespace tephra {
 // one after the other (the barrier): a later face reads what an earlier one
 // folded into its extra nodes (SymmetryFold.h). wait = false leaves out the
 // barrier at the end (the two faces of one direction when their node planes are disjoint).
+// True when the low and the high face of direction d touch disjoint node
+// planes, so the high face needs no barrier after the low one: with e extra
+// layers the low face's pairs lie in [0, 2e], the high face's in
+// [n - 1 - 2e, n), disjoint when n > 4e + 1.
+inline bool mirror_faces_disjoint(const NodeGrid& g, int d) { return g.n[d] > 4 * g.extra[d] + 1; }
+
 template <class Fn>
 void for_face_mirror_pairs(const NodeGrid& g, int f, Fn&& fn, bool wait = true) {
   const int d = f / 2, a = (d + 1) % 3, b = (d + 2) % 3;

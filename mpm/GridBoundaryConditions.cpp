@@ -163,7 +163,7 @@ void GridBoundaryConditions::apply(const NodeGrid& g, std::vector<Vec3>& velocit
         if (face[f].kind == FaceVelocityBC::Kind::Symmetry) {
           const int d = f / 2;
           const bool pair_follows =
-              f % 2 == 0 && face[f + 1].kind == FaceVelocityBC::Kind::Symmetry && g.n[d] > 4 * g.extra[d] + 1;
+              f % 2 == 0 && face[f + 1].kind == FaceVelocityBC::Kind::Symmetry && mirror_faces_disjoint(g, d);
           for_extra(
               f,
               [&](Vec3& v, const Vec3& mirror, int dd) {

@@ -38,24 +38,33 @@ inline NodeRuns node_runs(const NodeGrid& g, const NodeBox& b) {
 }
 inline NodeRuns node_runs(const NodeGrid& g) { return node_runs(g, g.active_box()); }
 
-// fn(gi) for every node of the runs, threaded (OpenMP, static) above
-// `min_parallel` nodes; fn must touch node gi only (then any split gives the same bits).
+// fn(gi) for every node of the runs, shared among the threads of an enclosing
+// parallel region (an orphaned `omp for`, static, with its barrier at the end;
+// outside a parallel region: serial). fn must touch node gi only (then any
+// split gives the same bits).
 template <class Fn>
-void for_each_run_node(const NodeRuns& r, Fn&& fn, long min_parallel = 4096) {
+void for_each_run_node_here(const NodeRuns& r, Fn&& fn) {
   if (r.count == 1) {
     const long len = long(r.length);
     const std::size_t f = r.first;
-#pragma omp parallel for schedule(static) if (len >= min_parallel)
+#pragma omp for schedule(static)
     for (long n = 0; n < len; ++n) fn(f + std::size_t(n));
     return;
   }
   const long runs = r.count;
   const std::size_t len = r.length;
-#pragma omp parallel for schedule(static) if (long(r.nodes()) >= min_parallel)
+#pragma omp for schedule(static)
   for (long q = 0; q < runs; ++q) {
     const std::size_t b = r.begin(q);
     for (std::size_t gi = b; gi < b + len; ++gi) fn(gi);
   }
+}
+
+// The same in its own parallel region, threaded (OpenMP) above `min_parallel` nodes.
+template <class Fn>
+void for_each_run_node(const NodeRuns& r, Fn&& fn, long min_parallel = 4096) {
+#pragma omp parallel if (long(r.nodes()) >= min_parallel)
+  for_each_run_node_here(r, fn);
 }
 
 // fn(gi) for every node of g's active box (NodeGrid::active_box), threaded.

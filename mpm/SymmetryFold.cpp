@@ -11,7 +11,6 @@ bool active(const GridBoundaryConditions& bcs, const NodeGrid& g, int f, int dim
   return f / 2 < dims && bcs.set_extra_nodes && bcs.face[f].kind == FaceVelocityBC::Kind::Symmetry && g.extra[f / 2] > 0;
 }
 
-
 // fold(e, m, d) over the pairs of every active face, inside a parallel region
 // (or serially outside one). Face after face, except that the low face of a
 // direction needs no barrier before its high face when both are folded and
@@ -25,7 +24,7 @@ void fold_faces_here(const GridBoundaryConditions& bcs, const NodeGrid& g, int d
   for (int f = 0; f < 6; ++f) {
     if (!active(bcs, g, f, dims)) continue;
     const int d = f / 2;
-    const bool pair_follows = f % 2 == 0 && active(bcs, g, f + 1, dims) && g.n[d] > 4 * g.extra[d] + 1;
+    const bool pair_follows = f % 2 == 0 && active(bcs, g, f + 1, dims) && mirror_faces_disjoint(g, d);
     for_face_mirror_pairs(g, f, fold, !pair_follows);
   }
 }
@@ -43,25 +42,10 @@ void fold_faces(const GridBoundaryConditions& bcs, const NodeGrid& g, int dims, 
 }
 
 // fn(gi) for every node of the active box, shared among the threads of an
-// enclosing parallel region (node-wise: the same bits for any split), with
-// the loop's barrier at the end.
+// enclosing parallel region (mpm/NodeRuns.h).
 template <class Fn>
 void active_nodes_here(const NodeGrid& g, Fn&& fn) {
-  const NodeRuns r = node_runs(g);
-  if (r.count == 1) {
-    const long len = long(r.length);
-    const std::size_t first = r.first;
-#pragma omp for schedule(static)
-    for (long n = 0; n < len; ++n) fn(first + std::size_t(n));
-  } else {
-    const long runs = r.count;
-    const std::size_t len = r.length;
-#pragma omp for schedule(static)
-    for (long q = 0; q < runs; ++q) {
-      const std::size_t b = r.begin(q);
-      for (std::size_t gi = b; gi < b + len; ++gi) fn(gi);
-    }
-  }
+  for_each_run_node_here(node_runs(g), fn);
 }
 
 Vec3 reflect(const Vec3& v, int d) {
