@@ -141,15 +141,45 @@ std::vector<double> flatten(const PatchLayout& layout, const PatchFields<CellFie
   return out;
 }
 
+// Where each level patch's storage starts in a flatten()ed array (and its
+// size at the end): each patch's storage is that of a field of the same
+// ghost width on it.
+template <class T>
+std::vector<std::size_t> storage_offsets(const PatchLayout& layout, const PatchFields<CellField<T>>& f) {
+  const std::size_t per = sizeof(T) / sizeof(double);
+  std::vector<std::size_t> offset(layout.level.patches.size() + 1, 0);
+  for (std::size_t p = 0; p < layout.level.patches.size(); ++p)
+    offset[p + 1] = offset[p] + CellField<T>(layout.level.patches[p], f.ghost_width()).size() * per;
+  return offset;
+}
+
+// Puts a field's flatten()ed array. Per-rank checkpoints (session 27,
+// core/io/RankCheckpoint.h): this rank's patches only, each a run at its
+// patch's offset, so the rank files merge into the flatten()ed array.
+template <class T>
+void put_flat(StateArchive& a, const std::string& name, const PatchLayout& layout, const PatchFields<CellField<T>>& f) {
+  if (!(output_per_rank() && layout.distributed)) {
+    a.put(name, flatten(layout, f));
+    return;
+  }
+  const std::vector<std::size_t> offset = storage_offsets(layout, f);
+  std::vector<double> mine;
+  std::vector<std::pair<std::size_t, std::size_t>> runs;
+  for (std::size_t n = 0; n < f.size(); ++n) {
+    const auto p = static_cast<std::size_t>(f.patch_index(n));
+    const double* d = reinterpret_cast<const double*>(f[n].data());
+    runs.emplace_back(offset[p], offset[p + 1] - offset[p]);
+    mine.insert(mine.end(), d, d + (offset[p + 1] - offset[p]));
+  }
+  a.put(name, std::move(mine), ArchivePart::as_runs(offset.back(), std::move(runs)));
+}
+
 // Reads this process's patches out of a flatten()ed array: each level patch's
 // storage size is that of a field of the same ghost width on it.
 template <class T>
 void restore(const PatchLayout& layout, const StateArchive& ar, const std::string& name, PatchFields<CellField<T>>& f) {
   const std::vector<double>& v = ar.doubles(name);
-  const std::size_t per = sizeof(T) / sizeof(double);
-  std::vector<std::size_t> offset(layout.level.patches.size() + 1, 0);
-  for (std::size_t p = 0; p < layout.level.patches.size(); ++p)
-    offset[p + 1] = offset[p] + CellField<T>(layout.level.patches[p], f.ghost_width()).size() * per;
+  const std::vector<std::size_t> offset = storage_offsets(layout, f);
   if (v.size() != offset.back()) throw RuntimeFailure("checkpoint array '" + name + "' has a bad size");
   for (std::size_t n = 0; n < f.size(); ++n) {
     const auto p = static_cast<std::size_t>(f.patch_index(n));
@@ -316,25 +346,25 @@ void IceComponent::model_reductions(const std::set<std::string>& labels,
 // step); the other saved fields so that the first output after a restart is
 // the same.
 void IceComponent::save_state(StateArchive& a) const {
-  a.put("ice.press_CC", flatten(layout_, press_CC_));
-  a.put("ice.press_equil_CC", flatten(layout_, press_equil_CC_));
-  a.put("ice.delP_Dilatate", flatten(layout_, delP_Dilatate_));
+  put_flat(a, "ice.press_CC", layout_, press_CC_);
+  put_flat(a, "ice.press_equil_CC", layout_, press_equil_CC_);
+  put_flat(a, "ice.delP_Dilatate", layout_, delP_Dilatate_);
   for (std::size_t m = 0; m < mats_.size(); ++m) {
     const std::string pre = "ice.m" + std::to_string(m) + ".";
     const IceMaterialFields& f = mats_[m];
-    a.put(pre + "rho_CC", flatten(layout_, f.rho_CC));
-    a.put(pre + "vel_CC", flatten(layout_, f.vel_CC));
-    a.put(pre + "temp_CC", flatten(layout_, f.temp_CC));
-    a.put(pre + "sp_vol_CC", flatten(layout_, f.sp_vol_CC));
-    a.put(pre + "rho_micro_CC", flatten(layout_, f.rho_micro_CC));
-    a.put(pre + "vol_frac_CC", flatten(layout_, f.vol_frac_CC));
-    a.put(pre + "speedSound_CC", flatten(layout_, f.speedSound_CC));
-    a.put(pre + "mom_L_ME_CC", flatten(layout_, f.mom_L_ME_CC));
-    a.put(pre + "eng_L_ME_CC", flatten(layout_, f.eng_L_ME_CC));
+    put_flat(a, pre + "rho_CC", layout_, f.rho_CC);
+    put_flat(a, pre + "vel_CC", layout_, f.vel_CC);
+    put_flat(a, pre + "temp_CC", layout_, f.temp_CC);
+    put_flat(a, pre + "sp_vol_CC", layout_, f.sp_vol_CC);
+    put_flat(a, pre + "rho_micro_CC", layout_, f.rho_micro_CC);
+    put_flat(a, pre + "vol_frac_CC", layout_, f.vol_frac_CC);
+    put_flat(a, pre + "speedSound_CC", layout_, f.speedSound_CC);
+    put_flat(a, pre + "mom_L_ME_CC", layout_, f.mom_L_ME_CC);
+    put_flat(a, pre + "eng_L_ME_CC", layout_, f.eng_L_ME_CC);
   }
   for (std::size_t k = 0; k < setup_.models.size(); ++k) {
     const std::string pre = "ice.model" + std::to_string(k) + ".";
-    for (auto& [name, field] : setup_.models[k]->state_fields()) a.put(pre + name, flatten(layout_, *field));
+    for (auto& [name, field] : setup_.models[k]->state_fields()) put_flat(a, pre + name, layout_, *field);
     for (auto& [name, value] : setup_.models[k]->state_scalars()) a.put_scalar(pre + name, *value);
     for (auto& [name, sums] : setup_.models[k]->state_sums())
       a.put(pre + "sums." + name, layout_.ordered_sum(sums->partials(), sums->width()));

@@ -8,6 +8,7 @@
 #include <tuple>
 #include <stdexcept>
 
+#include "core/io/StateArchive.h"
 #include "core/parallel/OutputGather.h"
 #include "core/parallel/Ranks.h"
 
@@ -386,7 +387,31 @@ void gather_for_checkpoint(const RankNodeSums& sums, const std::vector<HistoryVa
   for (std::size_t j = 0; j < order.size(); ++j) p.id[j] = static_cast<long long>(ids[order[j]]);
 }
 
+// The node runs (offset, length in doubles of a node array of `width` per
+// node, NodeGrid order) of the boxes: one run per (j, k) row of a box.
+static std::vector<std::pair<std::size_t, std::size_t>> node_runs(const std::vector<ArrayBox>& boxes, const IntVec3& n,
+                                                           std::size_t width) {
+  std::vector<std::pair<std::size_t, std::size_t>> runs;
+  for (const ArrayBox& b : boxes) {
+    if (b.empty()) continue;
+    for (int k = b.lo[2]; k < b.hi[2]; ++k)
+      for (int j = b.lo[1]; j < b.hi[1]; ++j) {
+        const std::size_t first = std::size_t(b.lo[0]) + std::size_t(n[0]) * (std::size_t(j) + std::size_t(n[1]) * std::size_t(k));
+        runs.emplace_back(first * width, std::size_t(b.hi[0] - b.lo[0]) * width);
+      }
+  }
+  return runs;
+}
+
+// Per-rank checkpoints (session 27, core/io/RankCheckpoint.h): inside
+// TimeLoop's OutputPerRank scope gather_for_checkpoint leaves this rank's
+// particles (ascending id) and its node box; each rank puts its particles as
+// rows keyed by the material's ids and the nodes RankNodeSums::whole takes
+// from it (output_pieces) as runs, so the rank files merge into the arrays
+// the gathered checkpoint holds.
 void MpmComponent::save_state(StateArchive& a) const {
+  const bool per_rank = layout_.distributed && output_per_rank();
+  const std::vector<ArrayBox> node_pieces = per_rank ? node_sums_.output_pieces() : std::vector<ArrayBox>{};
   for (const MpmMaterial& m : setup_.materials) {
     const std::string pre = prefix(m);
     const std::vector<HistoryVariable> hist = m.model->history();
@@ -399,9 +424,31 @@ void MpmComponent::save_state(StateArchive& a) const {
     }
     const Particles& p = layout_.distributed ? gathered : m.particles;
     const NodeGrid& g = layout_.distributed ? whole_grid : m.grid;
-    for_each_column(p, g, [&](const char* name, const auto& col) { a.put(pre + name, flatten(col)); });
-    a.put(pre + "id", std::vector<long long>(p.id));
-    for (std::size_t k = 0; k < hist.size(); ++k) a.put(pre + "history." + hist[k].name, p.history[k]);
+    if (!per_rank) {
+      for_each_column(p, g, [&](const char* name, const auto& col) { a.put(pre + name, flatten(col)); });
+      a.put(pre + "id", std::vector<long long>(p.id));
+      for (std::size_t k = 0; k < hist.size(); ++k) a.put(pre + "history." + hist[k].name, p.history[k]);
+      continue;
+    }
+    const std::string key = pre + "id";
+    for_each_column(p, g, [&](const char* name, const auto& col) {
+      using T = typename std::decay_t<decltype(col)>::value_type;
+      constexpr std::size_t k = std::is_same_v<T, double> ? 1 : (std::is_same_v<T, Vec3> ? 3 : 9);
+      const std::vector<double> flat = flatten(col);
+      if (name[0] != 'g') {
+        a.put(pre + name, flat, ArchivePart::as_rows(key, k));
+      } else if (col.empty()) {
+        a.put(pre + name, flat);  // an unused node array: empty on every rank
+      } else {
+        auto runs = node_runs(node_pieces, g.n, k);
+        std::vector<double> mine;
+        for (const auto& [offset, length] : runs) mine.insert(mine.end(), flat.begin() + long(offset), flat.begin() + long(offset + length));
+        a.put(pre + name, std::move(mine), ArchivePart::as_runs(flat.size(), std::move(runs)));
+      }
+    });
+    a.put(key, std::vector<long long>(p.id), ArchivePart::as_rows(key, 1));
+    for (std::size_t k = 0; k < hist.size(); ++k)
+      a.put(pre + "history." + hist[k].name, p.history[k], ArchivePart::as_rows(key, std::size_t(hist[k].components)));
   }
   a.put_scalar("mpm.stable_dt", stable_dt_);
   a.put_scalar("mpm.time", time_);

@@ -10,7 +10,9 @@
 
 #include "core/base/Errors.h"
 #include "core/io/OutputWriter.h"
+#include "core/io/RankCheckpoint.h"
 #include "core/io/StateArchive.h"
+#include "core/io/detail/ArchiveNames.h"
 #include "core/io/detail/Files.h"
 #include "core/io/detail/H5.h"
 
@@ -19,37 +21,6 @@ namespace fs = std::filesystem;
 namespace {
 
 const char* kFormat = "tephra-checkpoint-1";
-
-// HDF5 link names cannot contain '/' and cannot be "." : escape them (and
-// the escape character) percent-style so any archive name survives.
-std::string escape_name(const std::string& name) {
-  std::string out;
-  for (size_t i = 0; i < name.size(); ++i) {
-    const char c = name[i];
-    if (c == '%') out += "%25";
-    else if (c == '/') out += "%2F";
-    else if (c == '.' && i == 0) out += "%2E";
-    else out += c;
-  }
-  return out;
-}
-
-std::string unescape_name(const std::string& name, const std::string& where) {
-  std::string out;
-  for (size_t i = 0; i < name.size(); ++i) {
-    if (name[i] != '%') {
-      out += name[i];
-      continue;
-    }
-    const std::string code = name.substr(i + 1, 2);
-    if (code == "25") out += '%';
-    else if (code == "2F") out += '/';
-    else if (code == "2E") out += '.';
-    else throw RuntimeFailure(where + ": bad escaped array name '" + name + "'");
-    i += 2;
-  }
-  return out;
-}
 
 int parse_checkpoint_name(const std::string& name) {
   // c + digits + .h5
@@ -87,26 +58,68 @@ void CheckpointStore::write(int step, const StateArchive& state) {
     h5::set_attr_int64s(file.id(), "step", {step}, tmp);
     h5::Handle d = h5::create_group(file.id(), "doubles", tmp);
     for (const auto& [name, v] : state.all_doubles())
-      h5::write_doubles(d.id(), escape_name(name), {hsize_t(v.size())}, v.data(), tmp, true);
+      h5::write_doubles(d.id(), archive_names::escape(name), {hsize_t(v.size())}, v.data(), tmp, true);
     h5::Handle i = h5::create_group(file.id(), "ints", tmp);
     for (const auto& [name, v] : state.all_ints())
-      h5::write_int64s(i.id(), escape_name(name), {hsize_t(v.size())}, v.data(), tmp, true);
+      h5::write_int64s(i.id(), archive_names::escape(name), {hsize_t(v.size())}, v.data(), tmp, true);
     h5::flush(file, tmp);
   } catch (...) {
     files::remove_if_present(tmp);
     throw;
   }
   files::sync_and_rename(tmp, final_path);
+  keep_newest_up_to(step);
+}
 
-  // Retention: drop checkpoints newer than this one (an abandoned
-  // continuation), then the oldest until `cycle` remain.
-  std::vector<int> all = steps();
+std::string CheckpointStore::rank_path(int step, int rank) const {
+  return (fs::path(dir_) / rank_checkpoint_file_name(step, rank)).string();
+}
+
+void CheckpointStore::write_rank_part(int step, const StateArchive& state, int rank, int ranks) const {
+  const std::string final_path = rank_path(step, rank);
+  const std::string tmp = files::tmp_name(final_path);
+  try {
+    write_rank_checkpoint_file(tmp, step, state, rank, ranks);
+  } catch (...) {
+    files::remove_if_present(tmp);
+    throw;
+  }
+  files::sync_and_rename(tmp, final_path);
+}
+
+void CheckpointStore::write_manifest(int step, int ranks) {
+  const std::string final_path = path(step);
+  const std::string tmp = files::tmp_name(final_path);
+  try {
+    write_checkpoint_manifest(tmp, dir_, step, ranks);
+  } catch (...) {
+    files::remove_if_present(tmp);
+    throw;
+  }
+  files::sync_and_rename(tmp, final_path);
+  keep_newest_up_to(step);
+}
+
+// Retention: drop checkpoints newer than `step` (an abandoned continuation),
+// then the oldest until `cycle` remain; then every rank file that belongs to
+// no kept checkpoint (a dropped one's, or one whose manifest was never
+// written: an interrupted write).
+void CheckpointStore::keep_newest_up_to(int step) {
   std::vector<int> kept;
-  for (int s : all) {
+  for (int s : steps()) {
     if (s > step) files::remove_if_present(path(s));
     else kept.push_back(s);
   }
-  for (size_t n = 0; n + cycle_ < kept.size(); ++n) files::remove_if_present(path(kept[n]));
+  while (kept.size() > std::size_t(cycle_)) {
+    files::remove_if_present(path(kept.front()));
+    kept.erase(kept.begin());
+  }
+  std::vector<std::string> doomed;
+  for (const auto& e : fs::directory_iterator(dir_)) {
+    const int s = parse_rank_checkpoint_file_name(e.path().filename().string()).first;
+    if (s >= 0 && std::find(kept.begin(), kept.end(), s) == kept.end()) doomed.push_back(e.path().string());
+  }
+  for (const std::string& p : doomed) files::remove_if_present(p);
 }
 
 std::vector<int> CheckpointStore::steps() const {
@@ -122,15 +135,19 @@ std::vector<int> CheckpointStore::steps() const {
 StateArchive CheckpointStore::read(int step) const {
   const std::string p = path(step);
   h5::Handle file = h5::open_file_readonly(p);
-  if (!h5::has_attr(file.id(), "format") || h5::attr_string(file.id(), "format", p) != kFormat)
-    throw RuntimeFailure(p + ": not a Tephra checkpoint (format attribute missing or unknown)");
+  const std::string format = h5::has_attr(file.id(), "format") ? h5::attr_string(file.id(), "format", p) : "";
+  if (format == kCheckpointManifestFormat) {
+    file.close();
+    return read_checkpoint_manifest(p);
+  }
+  if (format != kFormat) throw RuntimeFailure(p + ": not a Tephra checkpoint (format attribute missing or unknown)");
   StateArchive out;
   h5::Handle d = h5::open_group(file.id(), "doubles", p);
   for (const std::string& name : h5::children(d.id(), p))
-    out.put(unescape_name(name, p), h5::read_doubles(d.id(), name, p));
+    out.put(archive_names::unescape(name, p), h5::read_doubles(d.id(), name, p));
   h5::Handle i = h5::open_group(file.id(), "ints", p);
   for (const std::string& name : h5::children(i.id(), p))
-    out.put(unescape_name(name, p), h5::read_int64s(i.id(), name, p));
+    out.put(archive_names::unescape(name, p), h5::read_int64s(i.id(), name, p));
   return out;
 }
 

@@ -5,6 +5,7 @@
 
 #include "core/base/Errors.h"
 #include "core/io/FrameFile.h"
+#include "core/io/RankCheckpoint.h"
 #include "core/io/RankFrameFile.h"
 #include "core/io/Reductions.h"
 #include "core/io/Xdmf.h"
@@ -54,6 +55,7 @@ std::string frame_xdmf(const std::string& path, int step) {
 
 bool is_checkpoint_or_tmp(const std::string& name) {
   std::string n = ends_with(name, ".tmp") ? name.substr(0, name.size() - 4) : name;
+  if (parse_rank_checkpoint_file_name(n).first >= 0) return true;  // a rank's part (RankCheckpoint.h)
   if (n.size() < 4 || n[0] != 'c' || !ends_with(n, ".h5")) return false;
   for (size_t i = 1; i + 3 < n.size(); ++i)
     if (n[i] < '0' || n[i] > '9') return false;

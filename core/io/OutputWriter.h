@@ -73,6 +73,11 @@ std::string write_rank_frame(const std::string& dir, const OutputFrame& frame, i
 // and /ints/<name> (i64), 1-D, with HDF5's Fletcher-32 checksum so a
 // corrupted file is detected on read. In names, '%', '/' and a leading '.'
 // are written as %25, %2F and %2E.
+// Under mpirun (session 27, core/io/RankCheckpoint.h) every rank writes
+// c<step>.r<rank>.h5 (write_rank_part) and rank 0, after a barrier, the
+// manifest c<step>.h5 (write_manifest); read() merges them. steps() lists a
+// checkpoint only when its c<step>.h5 exists; retention removes a dropped
+// checkpoint's rank files and rank files without a manifest.
 class StateArchive;
 
 class CheckpointStore {
@@ -81,10 +86,14 @@ class CheckpointStore {
   const std::string& dir() const { return dir_; }             // output_dir/checkpoints
   std::string path(int step) const;                           // dir()/c<step>.h5
   void write(int step, const StateArchive& state);
+  std::string rank_path(int step, int rank) const;  // dir()/c<step>.r<rank>.h5
+  void write_rank_part(int step, const StateArchive& state, int rank, int ranks) const;  // any rank
+  void write_manifest(int step, int ranks);  // rank 0, once every rank part is written
   std::vector<int> steps() const;                   // available checkpoints, ascending
   StateArchive read(int step) const;                // throws RuntimeFailure if absent or corrupt
 
  private:
+  void keep_newest_up_to(int step);  // retention after writing `step`
   std::string dir_;
   int cycle_;
 };

@@ -139,9 +139,17 @@ void TimeLoop::write_checkpoint() {
     while (time_.init_time + state_.checkpoints_done * *archiver_.checkpoint_interval <= state_.time)
       ++state_.checkpoints_done;
   }
+  // One rank: checkpoints/c<step>.h5 as always. Under mpirun (session 27,
+  // core/io/RankCheckpoint.h) the component's gathers keep each rank's own
+  // part (OutputPerRank) and mark it (ArchivePart): every rank writes
+  // c<step>.r<rank>.h5, and after a barrier rank 0 writes the manifest
+  // c<step>.h5. Rank 0 receives no checkpoint data.
+  const Ranks ranks = world_ranks();
   StateArchive archive;
-  {
-    OutputToRoot to_root;  // the archive is whole on rank 0 only, which writes it
+  if (ranks.size == 1) {
+    component_.save_state(archive);
+  } else {
+    OutputPerRank per_rank;
     component_.save_state(archive);
   }
   archive.put_scalar("timeloop.time", state_.time);
@@ -149,7 +157,15 @@ void TimeLoop::write_checkpoint() {
   archive.put_scalar("timeloop.previous_dt", state_.previous_dt);
   archive.put_int("timeloop.outputs_done", state_.outputs_done);
   archive.put_int("timeloop.checkpoints_done", state_.checkpoints_done);
-  if (writer_) CheckpointStore(options_.output_dir, archiver_.checkpoint_cycle).write(static_cast<int>(state_.step), archive);
+  const int step = static_cast<int>(state_.step);
+  if (ranks.size == 1) {
+    if (writer_) CheckpointStore(options_.output_dir, archiver_.checkpoint_cycle).write(step, archive);
+    return;
+  }
+  CheckpointStore store(options_.output_dir, archiver_.checkpoint_cycle);
+  store.write_rank_part(step, archive, ranks.rank, ranks.size);
+  barrier();  // every rank file is in place before the manifest names it
+  if (writer_) store.write_manifest(step, ranks.size);
 }
 
 void TimeLoop::run(const std::string& resolved_deck_xml) {

@@ -66,12 +66,6 @@ void write_array(hid_t parent, const std::string& name, const std::vector<hsize_
                  "cannot write " + obj);
 }
 
-Handle open_dataset(hid_t parent, const std::string& name, const std::string& where) {
-  silence_hdf5();
-  return Handle(check(H5Dopen2(parent, name.c_str(), H5P_DEFAULT), where,
-                      "has no dataset '" + name + "'"),
-                Handle::Kind::Dataset);
-}
 
 H5T_class_t dataset_class(hid_t set, const std::string& name, const std::string& where) {
   Handle type(check(H5Dget_type(set), where, "cannot read the type of '" + name + "'"),
@@ -127,6 +121,13 @@ std::vector<T> read_attr(hid_t obj, const std::string& name, hid_t mem_type,
 }
 
 }  // namespace
+
+Handle open_dataset(hid_t parent, const std::string& name, const std::string& where) {
+  silence_hdf5();
+  return Handle(check(H5Dopen2(parent, name.c_str(), H5P_DEFAULT), where,
+                      "has no dataset '" + name + "'"),
+                Handle::Kind::Dataset);
+}
 
 Handle& Handle::operator=(Handle&& o) noexcept {
   if (this != &o) {

@@ -46,6 +46,7 @@ void write_doubles(hid_t parent, const std::string& name, const std::vector<hsiz
                    const double* data, const std::string& where, bool checksum = false);
 void write_int64s(hid_t parent, const std::string& name, const std::vector<hsize_t>& dims,
                   const long long* data, const std::string& where, bool checksum = false);
+Handle open_dataset(hid_t parent, const std::string& name, const std::string& where);  // for its attrs
 std::vector<hsize_t> dataset_dims(hid_t parent, const std::string& name, const std::string& where);
 bool dataset_is_integer(hid_t parent, const std::string& name, const std::string& where);
 std::vector<double> read_doubles(hid_t parent, const std::string& name, const std::string& where);
