@@ -68,7 +68,7 @@ void CheckpointStore::write(int step, const StateArchive& state) {
     throw;
   }
   files::sync_and_rename(tmp, final_path);
-  keep_newest_up_to(step);
+  keep_newest_up_to(step, 0);
 }
 
 std::string CheckpointStore::rank_path(int step, int rank) const {
@@ -97,14 +97,16 @@ void CheckpointStore::write_manifest(int step, int ranks) {
     throw;
   }
   files::sync_and_rename(tmp, final_path);
-  keep_newest_up_to(step);
+  keep_newest_up_to(step, ranks);
 }
 
 // Retention: drop checkpoints newer than `step` (an abandoned continuation),
 // then the oldest until `cycle` remain; then every rank file that belongs to
 // no kept checkpoint (a dropped one's, or one whose manifest was never
-// written: an interrupted write).
-void CheckpointStore::keep_newest_up_to(int step) {
+// written: an interrupted write), and those of `step` itself beyond its
+// `ranks` files (left by an interrupted write of the same step on more ranks;
+// a one-file checkpoint has 0 rank files).
+void CheckpointStore::keep_newest_up_to(int step, int ranks) {
   std::vector<int> kept;
   for (int s : steps()) {
     if (s > step) files::remove_if_present(path(s));
@@ -116,8 +118,10 @@ void CheckpointStore::keep_newest_up_to(int step) {
   }
   std::vector<std::string> doomed;
   for (const auto& e : fs::directory_iterator(dir_)) {
-    const int s = parse_rank_checkpoint_file_name(e.path().filename().string()).first;
-    if (s >= 0 && std::find(kept.begin(), kept.end(), s) == kept.end()) doomed.push_back(e.path().string());
+    const auto [s, rank] = parse_rank_checkpoint_file_name(e.path().filename().string());
+    if (s < 0) continue;
+    if (std::find(kept.begin(), kept.end(), s) == kept.end() || (s == step && rank >= ranks))
+      doomed.push_back(e.path().string());
   }
   for (const std::string& p : doomed) files::remove_if_present(p);
 }

@@ -93,7 +93,7 @@ class CheckpointStore {
   StateArchive read(int step) const;                // throws RuntimeFailure if absent or corrupt
 
  private:
-  void keep_newest_up_to(int step);  // retention after writing `step`
+  void keep_newest_up_to(int step, int ranks);  // retention after writing `step` on `ranks` files
   std::string dir_;
   int cycle_;
 };

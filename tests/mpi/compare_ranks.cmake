@@ -12,6 +12,8 @@
 #      checkpoint before the end; 1 -> 2: a copy of np1 restarted by
 #      mpirun -np 2; 2 -> 4: a copy of np2 restarted by mpirun -np 4 (one
 #      patch per rank). All must end with np1's .dat files and fields.
+#   3. Since session 27 the 2-rank checkpoints are per-rank files and a
+#      manifest: damaged copies (see below) must fail or fall back cleanly.
 # Variables: TEPHRA, MPIEXEC, DECK_IN, WORK.
 cmake_minimum_required(VERSION 3.16)
 
@@ -86,6 +88,56 @@ if(rc EQUAL 0 OR named EQUAL -1)
   message(FATAL_ERROR "missing rank file ${gone}: extract exit ${rc}, stderr: ${err}")
 endif()
 message(STATUS "2 ranks: ${n0} frames of one file per rank; missing ${gone_name}: exit ${rc}: ${err}")
+
+# Session 27 (issue 7 item 4): the 2-rank run wrote each checkpoint as one
+# file per rank (checkpoints/c<step>.r<rank>.h5) and a manifest c<step>.h5;
+# the 1-rank run single files. A restart from a copy whose newest checkpoint
+# lost its rank-1 file, or has it truncated, fails naming the file; without
+# the newest manifest (an interrupted write) the restart takes the previous
+# checkpoint and still ends with np1's output.
+file(GLOB np1_rank_ckpts ${WORK}/np1/checkpoints/c*.r*.h5)
+file(GLOB np2_ckpts ${WORK}/np2/checkpoints/c?????.h5)
+file(GLOB np2_ckpt_r0 ${WORK}/np2/checkpoints/c*.r0.h5)
+file(GLOB np2_ckpt_r1 ${WORK}/np2/checkpoints/c*.r1.h5)
+list(LENGTH np2_ckpts nc)
+list(LENGTH np2_ckpt_r0 nc0)
+list(LENGTH np2_ckpt_r1 nc1)
+if(np1_rank_ckpts OR nc LESS 2 OR NOT nc EQUAL nc0 OR NOT nc EQUAL nc1)
+  message(FATAL_ERROR "rank checkpoints: np1 has '${np1_rank_ckpts}', np2 has ${nc} manifests, ${nc0} rank-0 and ${nc1} rank-1 files")
+endif()
+list(SORT np2_ckpt_r1)
+list(GET np2_ckpt_r1 -1 newest_r1)
+get_filename_component(newest_r1 ${newest_r1} NAME)
+foreach(damage missing truncated)
+  file(COPY ${WORK}/np2/ DESTINATION ${WORK}/ckpt_${damage})
+  if(damage STREQUAL "missing")
+    file(REMOVE ${WORK}/ckpt_${damage}/checkpoints/${newest_r1})
+  else()
+    file(READ ${WORK}/ckpt_${damage}/checkpoints/${newest_r1} head LIMIT 2000 HEX)
+    file(WRITE ${WORK}/ckpt_${damage}/checkpoints/${newest_r1} "truncated")
+  endif()
+  execute_process(COMMAND ${TEPHRA} --restart ${WORK}/ckpt_${damage} --quiet
+                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  string(FIND "${err}" "${newest_r1}" named)
+  if(rc EQUAL 0 OR named EQUAL -1)
+    message(FATAL_ERROR "${damage} rank checkpoint file ${newest_r1}: restart exit ${rc}, stderr: ${err}")
+  endif()
+  message(STATUS "${damage} ${newest_r1}: restart exit ${rc}: ${err}")
+endforeach()
+file(COPY ${WORK}/np2/ DESTINATION ${WORK}/no_manifest)
+list(SORT np2_ckpts)
+list(GET np2_ckpts -1 newest_manifest)
+get_filename_component(newest_manifest ${newest_manifest} NAME)
+file(REMOVE ${WORK}/no_manifest/checkpoints/${newest_manifest})
+run(${TEPHRA} --restart ${WORK}/no_manifest --quiet)
+expect_same_output(${WORK}/np1 ${WORK}/no_manifest "2-rank checkpoint without its newest manifest restarted on 1")
+file(GLOB orphans ${WORK}/no_manifest/checkpoints/c*.r*.h5)
+foreach(f ${orphans})
+  get_filename_component(n ${f} NAME)
+  if(n STREQUAL newest_r1)
+    message(FATAL_ERROR "the manifest-less rank file ${n} survived the restart's next checkpoint")
+  endif()
+endforeach()
 
 file(COPY ${WORK}/np2/ DESTINATION ${WORK}/restart21)
 run(${TEPHRA} --restart ${WORK}/restart21 --quiet)
