@@ -349,9 +349,10 @@ std::map<std::string, std::vector<double>> MpmComponent::reductions(const std::s
 
 // On MPI ranks: the particles of every rank in ascending id (a checkpoint
 // that any rank count can read) and whole-grid node arrays (mpm/RankNodeSums.h).
-// Inside TimeLoop's OutputToRoot scope the gathers land on rank 0 only: the
-// other ranks make the same collective calls and are left with empty
-// columns (their archive is not written).
+// Inside an OutputToRoot scope the gathers land on rank 0 only: the other
+// ranks make the same collective calls and are left with empty columns.
+// Inside TimeLoop's OutputPerRank scope (session 27) nothing moves: this
+// rank's particles in ascending id and its node box (save_state marks them).
 void gather_for_checkpoint(const RankNodeSums& sums, const std::vector<HistoryVariable>& hist, Particles& p,
                            NodeGrid& g) {
   std::vector<double> ids(p.id.begin(), p.id.end());

@@ -131,7 +131,7 @@ std::vector<double> RankNodeSums::whole(const double* data, int width) const {
     for (int j = mine.lo[1]; j < mine.hi[1]; ++j)
       for (int i = mine.lo[0]; i < mine.hi[0]; ++i)
         for (std::size_t c = 0; c < w; ++c) local.push_back(data[node_index(i, j, k) * w + c]);
-  // gather_output: to every rank, or to rank 0 alone inside TimeLoop's
+  // gather_output: to every rank, or to rank 0 alone inside an
   // OutputToRoot scope (the other ranks then return an empty array).
   const std::vector<double> all = gather_output(local);
   if (!output_gather_lands_here()) return {};

@@ -1,9 +1,10 @@
 #pragma once
 // Where the output gathers deliver (issue 7 item 4, session 23).
 //
-// Under mpirun rank 0 alone writes the checkpoints (session 23; frames: one
-// file per rank since session 25, see OutputPerRank below) (Debian's HDF5
-// is serial: one writer, the same files as a 1-rank run). The components
+// Under mpirun every rank writes its own part of a frame (session 25) and of
+// a checkpoint (session 27) inside an OutputPerRank scope (below); the
+// OutputToRoot scope (session 23: rank 0 alone wrote, Debian's HDF5 being
+// serial) is kept for tests and tools that want the whole on rank 0. The components
 // assemble the whole-level arrays of a frame or of the restart state by
 // gathering their patches (ICE: PatchLayout::gather_blocks; MPM: the
 // particles and RankNodeSums::whole). Outside an OutputToRoot scope these
@@ -15,7 +16,8 @@
 // (`output_gather_lands_here()` is false there) and must not be used.
 //
 // Session 25 (issue 7 item 4, per-rank output): inside an OutputPerRank
-// scope, which TimeLoop opens around fill_output under mpirun, the gathers
+// scope, which TimeLoop opens around fill_output and (session 27)
+// save_state under mpirun, the gathers
 // do not communicate at all: gather_output returns this rank's `local`,
 // gather_patch_blocks returns this rank's blocks in their places (the other
 // patches' blocks empty). The component marks which part of each grid array
