@@ -50,9 +50,7 @@ std::string CheckpointStore::path(int step) const {
 }
 
 void CheckpointStore::write(int step, const StateArchive& state) {
-  const std::string final_path = path(step);
-  const std::string tmp = files::tmp_name(final_path);
-  try {
+  files::write_via_tmp(path(step), [&](const std::string& tmp) {
     h5::Handle file = h5::create_file(tmp);
     h5::set_attr_string(file.id(), "format", kFormat, tmp);
     h5::set_attr_int64s(file.id(), "step", {step}, tmp);
@@ -63,11 +61,7 @@ void CheckpointStore::write(int step, const StateArchive& state) {
     for (const auto& [name, v] : state.all_ints())
       h5::write_int64s(i.id(), archive_names::escape(name), {hsize_t(v.size())}, v.data(), tmp, true);
     h5::flush(file, tmp);
-  } catch (...) {
-    files::remove_if_present(tmp);
-    throw;
-  }
-  files::sync_and_rename(tmp, final_path);
+  });
   keep_newest_up_to(step, 0);
 }
 
@@ -76,27 +70,11 @@ std::string CheckpointStore::rank_path(int step, int rank) const {
 }
 
 void CheckpointStore::write_rank_part(int step, const StateArchive& state, int rank, int ranks) const {
-  const std::string final_path = rank_path(step, rank);
-  const std::string tmp = files::tmp_name(final_path);
-  try {
-    write_rank_checkpoint_file(tmp, step, state, rank, ranks);
-  } catch (...) {
-    files::remove_if_present(tmp);
-    throw;
-  }
-  files::sync_and_rename(tmp, final_path);
+  files::write_via_tmp(rank_path(step, rank), [&](const std::string& tmp) { write_rank_checkpoint_file(tmp, step, state, rank, ranks); });
 }
 
 void CheckpointStore::write_manifest(int step, int ranks) {
-  const std::string final_path = path(step);
-  const std::string tmp = files::tmp_name(final_path);
-  try {
-    write_checkpoint_manifest(tmp, dir_, step, ranks);
-  } catch (...) {
-    files::remove_if_present(tmp);
-    throw;
-  }
-  files::sync_and_rename(tmp, final_path);
+  files::write_via_tmp(path(step), [&](const std::string& tmp) { write_checkpoint_manifest(tmp, dir_, step, ranks); });
   keep_newest_up_to(step, ranks);
 }
 

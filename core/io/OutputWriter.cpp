@@ -123,14 +123,7 @@ void OutputWriter::write_deck_copy(const std::string& resolved_xml) {
 void OutputWriter::write_frame(const OutputFrame& frame) {
   const std::string name = frame_file_name(frame.step);
   const std::string path = (fs::path(dir_) / "frames" / name).string();
-  const std::string tmp = files::tmp_name(path);
-  try {
-    write_frame_file(tmp, frame);
-  } catch (...) {
-    files::remove_if_present(tmp);
-    throw;
-  }
-  files::sync_and_rename(tmp, path);
+  files::write_via_tmp(path, [&](const std::string& tmp) { write_frame_file(tmp, frame); });
   // The index is built from the file as written, so it cannot disagree with it.
   frame_index_[frame.step] = frame_xdmf(path, frame.step);
   write_index();
@@ -138,20 +131,12 @@ void OutputWriter::write_frame(const OutputFrame& frame) {
 
 std::string write_rank_frame(const std::string& dir, const OutputFrame& frame, int rank, int ranks) {
   const std::string path = (fs::path(dir) / "frames" / rank_frame_file_name(frame.step, rank)).string();
-  const std::string tmp = files::tmp_name(path);
-  try {
-    write_rank_frame_file(tmp, frame, rank, ranks);
-  } catch (...) {
-    files::remove_if_present(tmp);
-    throw;
-  }
-  files::sync_and_rename(tmp, path);
+  files::write_via_tmp(path, [&](const std::string& tmp) { write_rank_frame_file(tmp, frame, rank, ranks); });
   return path;
 }
 
 void OutputWriter::write_frame_index(int step, double time, int ranks) {
   const std::string path = (fs::path(dir_) / "frames" / frame_file_name(step)).string();
-  const std::string tmp = files::tmp_name(path);
   // Every rank file is read (its layout) before the index names it.
   std::vector<std::pair<SavedFrame, std::string>> layouts;
   for (int r = 0; r < ranks; ++r) {
@@ -162,13 +147,7 @@ void OutputWriter::write_frame_index(int step, double time, int ranks) {
       throw RuntimeFailure(f + ": rank file missing (rank " + std::to_string(r) + " of " + std::to_string(ranks) + ")");
     layouts.emplace_back(read_rank_file_layout(f), "frames/" + name);
   }
-  try {
-    write_frame_index_file(tmp, step, time, ranks);
-  } catch (...) {
-    files::remove_if_present(tmp);
-    throw;
-  }
-  files::sync_and_rename(tmp, path);
+  files::write_via_tmp(path, [&](const std::string& tmp) { write_frame_index_file(tmp, step, time, ranks); });
   frame_index_[step] = xdmf_rank_frame_grid(layouts);
   write_index();
 }

@@ -37,15 +37,6 @@ StateArchive sample_state(double salt) {
   return s;
 }
 
-void expect_same(const StateArchive& a, const StateArchive& b) {
-  ASSERT_EQ(a.all_doubles().size(), b.all_doubles().size());
-  ASSERT_EQ(a.all_ints().size(), b.all_ints().size());
-  for (const auto& [name, v] : a.all_doubles()) {
-    ASSERT_TRUE(b.has(name)) << name;
-    EXPECT_TRUE(test::same_bits(v, b.doubles(name))) << name;
-  }
-  for (const auto& [name, v] : a.all_ints()) EXPECT_EQ(v, b.ints(name)) << name;
-}
 
 // Where `value`'s 8 bytes first occur in the file.
 size_t find_bytes(const std::string& data, double value) {
@@ -61,8 +52,8 @@ TEST(IoCheckpoint, RoundTripIsBitExact) {
   store.write(7, in);
   EXPECT_TRUE(fs::exists(dir + "/checkpoints/c00007.h5"));
   EXPECT_FALSE(fs::exists(dir + "/checkpoints/c00007.h5.tmp"));
-  expect_same(in, store.read(7));
-  expect_same(store.read(7), in);
+  test::expect_same_archive(in, store.read(7));
+  test::expect_same_archive(store.read(7), in);
   EXPECT_EQ(store.read(7).integer("step"), 42);
 }
 
@@ -71,7 +62,7 @@ TEST(IoCheckpoint, KeepsTheNewestCycle) {
   CheckpointStore store(dir, 2);
   for (int s : {10, 20, 30}) store.write(s, sample_state(s));
   EXPECT_EQ(store.steps(), (std::vector<int>{20, 30}));
-  expect_same(sample_state(20), store.read(20));
+  test::expect_same_archive(sample_state(20), store.read(20));
   // A restart from 20 writes 25: 30 belongs to the abandoned continuation.
   store.write(25, sample_state(25));
   EXPECT_EQ(store.steps(), (std::vector<int>{20, 25}));

@@ -72,15 +72,6 @@ void write_checkpoint(CheckpointStore& store, int step, int ranks = 2) {
   store.write_manifest(step, ranks);
 }
 
-void expect_same(const StateArchive& a, const StateArchive& b) {
-  ASSERT_EQ(a.all_doubles().size(), b.all_doubles().size());
-  ASSERT_EQ(a.all_ints().size(), b.all_ints().size());
-  for (const auto& [name, v] : a.all_doubles()) {
-    ASSERT_TRUE(b.has(name)) << name;
-    EXPECT_TRUE(test::same_bits(v, b.doubles(name))) << name;
-  }
-  for (const auto& [name, v] : a.all_ints()) EXPECT_EQ(v, b.ints(name)) << name;
-}
 
 template <class Fn>
 void expect_failure_naming(Fn&& fn, const std::string& name) {
@@ -109,7 +100,7 @@ TEST(IoRankCheckpoint, RankFilesReadAsTheWholeArchive) {
   EXPECT_EQ(store.steps(), std::vector<int>{10});
   EXPECT_TRUE(fs::exists(store.rank_path(10, 0)));
   EXPECT_TRUE(fs::exists(store.rank_path(10, 1)));
-  expect_same(store.read(10), whole_state());
+  test::expect_same_archive(store.read(10), whole_state());
 }
 
 TEST(IoRankCheckpoint, MissingTruncatedOrForeignRankFileIsNamed) {
@@ -154,12 +145,12 @@ TEST(IoRankCheckpoint, ManifestLessRankFilesAreNotACheckpointAndGoLater) {
   EXPECT_FALSE(fs::exists(store.rank_path(20, 1)));
   EXPECT_FALSE(fs::exists(store.rank_path(30, 3)));
   EXPECT_TRUE(fs::exists(store.rank_path(30, 1)));
-  expect_same(store.read(30), whole_state());
+  test::expect_same_archive(store.read(30), whole_state());
   // A one-file checkpoint of step 30 (a 1-rank restart writing it again)
   // leaves no rank files of step 30.
   store.write(30, whole_state());
   EXPECT_FALSE(fs::exists(store.rank_path(30, 0)));
-  expect_same(store.read(30), whole_state());
+  test::expect_same_archive(store.read(30), whole_state());
 }
 
 TEST(IoRankCheckpoint, RetentionDropsRankFilesWithTheirManifest) {

@@ -5,7 +5,10 @@
 #include <cstring>
 #include <vector>
 
+#include <gtest/gtest.h>
+
 #include "core/io/OutputFrame.h"
+#include "core/io/StateArchive.h"
 
 namespace tephra::test {
 
@@ -103,6 +106,17 @@ inline OutputFrame sample_frame(const Grid& grid, int step) {
 inline bool same_bits(const std::vector<double>& a, const std::vector<double>& b) {
   return a.size() == b.size() &&
          (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(double)) == 0);
+}
+
+// Two archives with the same arrays, equal bit for bit.
+inline void expect_same_archive(const StateArchive& a, const StateArchive& b) {
+  ASSERT_EQ(a.all_doubles().size(), b.all_doubles().size());
+  ASSERT_EQ(a.all_ints().size(), b.all_ints().size());
+  for (const auto& [name, v] : a.all_doubles()) {
+    ASSERT_TRUE(b.has(name)) << name;
+    EXPECT_TRUE(same_bits(v, b.doubles(name))) << name;
+  }
+  for (const auto& [name, v] : a.all_ints()) EXPECT_EQ(v, b.ints(name)) << name;
 }
 
 }  // namespace tephra::test

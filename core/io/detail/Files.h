@@ -13,6 +13,21 @@ void write_atomic(const std::string& path, const std::string& content);
 void sync_and_rename(const std::string& tmp, const std::string& path);  // fsync tmp, rename
 void remove_if_present(const std::string& path);
 
+// Writes `path` through its tmp name: write(tmp) creates and fills the tmp
+// file; if it throws, the tmp file is removed and the exception passes on,
+// else the tmp file is synced and renamed over `path`.
+template <class Write>
+void write_via_tmp(const std::string& path, Write&& write) {
+  const std::string tmp = tmp_name(path);
+  try {
+    write(tmp);
+  } catch (...) {
+    remove_if_present(tmp);
+    throw;
+  }
+  sync_and_rename(tmp, path);
+}
+
 // Appends `row` (which must end with '\n') to `path` with one write(2) on an
 // O_APPEND descriptor: the row lands whole at the end of the file. A process
 // killed before the call leaves no trace of the row; only a kernel or power
