@@ -30,6 +30,7 @@
 #include "ice/AdvectionBounds.h"
 #include "ice/FaceFluidShare.h"
 #include "ice/IceComponent.h"
+#include "ice/RadialWeights.h"
 
 namespace tephra {
 
@@ -180,6 +181,14 @@ bool IceComponent::scale_fluid_flux(std::size_t m, double dt, FaceScalars& flux)
       });
     }
   // The positivity limit of each interior donor cell (1 where inactive).
+  // Outflows in units of the donor's content: axisymmetric, an r-face's
+  // flux enters the donor's balance times r_f / r_i (ice/RadialWeights.h),
+  // 2 at the outer face of the axis cell. Without that weight the limit let
+  // the axis cell send sum phi chi L = 1/2 through that face, i.e. all of
+  // its content: the trace gas of a steel-filled axis cell of the cookoff
+  // deck went to M = -4e-37 and T = -3e13 K (docs/mpmice.md "Session 27:
+  // the axis trace gas").
+  const RadialWeights* rw = radial();
   lag_limit_.fill(1.0);
   for (std::size_t pi = 0; pi < g.patches.size(); ++pi)
     for_each_cell(g.patches[pi].cells(), [&](int i, int j, int k) {
@@ -187,7 +196,8 @@ bool IceComponent::scale_fluid_flux(std::size_t m, double dt, FaceScalars& flux)
       double out = 0, out_scaled = 0;
       for (int d = 0; d < 3; ++d) {
         const IntVec3 hi = c + IntVec3::Unit(d);
-        const double phi_lo = -u.at(d, pi)(c) * dt / g.dx[d], phi_hi = u.at(d, pi)(hi) * dt / g.dx[d];
+        const double a_lo = rw && d == 0 ? rw->lo_row(i)[0] : 1.0, a_hi = rw && d == 0 ? rw->hi_row(i)[0] : 1.0;
+        const double phi_lo = -u.at(d, pi)(c) * dt / g.dx[d] * a_lo, phi_hi = u.at(d, pi)(hi) * dt / g.dx[d] * a_hi;
         if (phi_lo > 0) out += phi_lo, out_scaled += phi_lo * lag_chi_.at(d, pi)(c);
         if (phi_hi > 0) out += phi_hi, out_scaled += phi_hi * lag_chi_.at(d, pi)(hi);
       }
