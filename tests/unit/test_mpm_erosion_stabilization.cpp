@@ -25,7 +25,8 @@ TEST(Erosion, AlgorithmsOnFlaggedParticlesOnly) {
   const std::vector<double> localized = {0.0, 1.0, 1.0};
   auto run = [&](ErosionAlgorithm a) {
     std::vector<Mat3> s = {sample_stress(1), sample_stress(1), sample_stress(-1)};
-    erode_failed_particles(a, localized, s);
+    std::vector<double> c = {9e6, 9e6, 9e6};
+    erode_failed_particles(a, localized, s, c, 5000.0);
     return s;
   };
   // Particle 0 is not flagged: unchanged by every algorithm.
@@ -45,6 +46,23 @@ TEST(Erosion, AlgorithmsOnFlaggedParticlesOnly) {
   EXPECT_NEAR((sh[2] + Mat3::Identity()).norm(), 0.0, 1e-15);
   auto k = run(ErosionAlgorithm::KeepStress);
   EXPECT_EQ(k[1], sample_stress(1));
+}
+
+// ZeroStress also bounds a flagged particle's wave speed by the material's
+// at rest (a failed particle crushed near its EOS limit reported 9.3e6 m/s in
+// the cookoff run and set the time step); unflagged particles and the other
+// algorithms (which keep a pressure) leave it.
+TEST(Erosion, ZeroStressBoundsTheWaveSpeedOfFlaggedParticles) {
+  const std::vector<double> localized = {0.0, 1.0, 1.0};
+  for (ErosionAlgorithm a : {ErosionAlgorithm::ZeroStress, ErosionAlgorithm::AllowNoTension,
+                             ErosionAlgorithm::AllowNoShear, ErosionAlgorithm::KeepStress, ErosionAlgorithm::None}) {
+    std::vector<Mat3> s = {sample_stress(1), sample_stress(1), sample_stress(-1)};
+    std::vector<double> c = {9e6, 9e6, 3000.0};
+    erode_failed_particles(a, localized, s, c, 5000.0);
+    EXPECT_EQ(c[0], 9e6);
+    EXPECT_EQ(c[1], a == ErosionAlgorithm::ZeroStress ? 5000.0 : 9e6);
+    EXPECT_EQ(c[2], 3000.0);  // slower than at rest: kept
+  }
 }
 
 TEST(Erosion, NamesOfTheSchema) {
