@@ -159,8 +159,17 @@ bool flag_out_of_range_donors(const Grid& g, const CellScalars& psi, const CellS
         }
         if (out_M == 0.0) continue;
         const double RM = M - out_M, RQ = M * p - out_Q;
-        const double tol = 1e-12 * std::max(std::abs(lo), std::abs(hi)) * M;
-        const bool bad = RM > 0 ? (RQ < lo * RM - tol || RQ > hi * RM + tol) : out_Q > M * p;
+        // Round-off allowance of each comparison, relative to the terms in it
+        // (RQ = M p - out_Q against psi_b (M - out_M)). Not the neighbourhood's
+        // largest |psi| times M: a near-vacuum trace neighbour (v = 8.4e7
+        // m^3/kg beside a donor's 2.2e-3 in the axisymmetric cookoff at
+        // 1.097 ms) made that allowance 1e10 times the donor's content, the
+        // donor sent 1.03 times its M v and kept v = -1.2e-4 (docs/mpmice.md
+        // "Session 27: the contents' range check").
+        const double terms = std::abs(M * p) + std::abs(out_Q);
+        const double tol_lo = 1e-12 * (terms + std::abs(lo) * (M + out_M));
+        const double tol_hi = 1e-12 * (terms + std::abs(hi) * (M + out_M));
+        const bool bad = RM > 0 ? (RQ < lo * RM - tol_lo || RQ > hi * RM + tol_hi) : out_Q > M * p;
         if (bad) {
           fl[c] = 1.0;
           row_flagged = true;

@@ -221,5 +221,55 @@ TEST(IceAdvectionBounds, NoDonorIsLimitedBelowTheInactiveOutflow) {
   EXPECT_GT(limited_at_09, 0);
 }
 
+// Item 2's round-off allowance is relative to the terms of each comparison,
+// not to the neighbourhood's largest |psi|. The numbers of the cookoff run's
+// stop at 1.097 ms (docs/mpmice.md "Session 27: the contents' range check"):
+// a trace-gas donor D (M = 2.1249e-21, v = 2.1891e-3 m^3/kg) beside a
+// near-vacuum trace (v = 8.4195e7) sends F = 1.168e-21 of mass through one
+// face; its remaining content RQ = M v - F_Q must lie in [lo, hi] RM with
+// RM = M - F = 0.957e-21 > 0 and lo = 3.06e-5, so any RQ < 0 is outside.
+// The former allowance 1e-12 max|psi| M = 1.8e-25 let RQ = -1.2e-25 pass
+// (the cookoff donor: v went to -1.2e-4); the new one, 1e-12 times the
+// compared terms (~1e-35 here), flags it. Mutation (the former allowance,
+// temporary): the third case fails.
+TEST(IceAdvectionBounds, RangeCheckAllowanceIsRelativeToTheComparedTerms) {
+  set_thread_count(1);
+  std::ostringstream x;
+  x << "<Uintah_specification><Grid><Level><Box label=\"1\"><lower>[0,0,0]</lower><upper>[1,0.2,0.2]</upper>"
+    << "<resolution>[5,1,1]</resolution><extraCells>[0,0,0]</extraCells><patches>[1,1,1]</patches></Box>"
+    << "<periodic>[1,1,1]</periodic></Level></Grid></Uintah_specification>";
+  auto deck = load_deck_from_string(x.str(), "line.ups", ".");
+  const Grid g = make_grid(deck->root.require_child("Grid"));
+  LocalHaloExchange halo(g);
+  CellScalars mass(g, 2), psi(g, 2), flag(g, 2);
+  FaceScalars mflux(g, 0), pflux(g, 0);
+  const double psi_of[5] = {3.06e-5, 8.4195e7, 2.1891e-3, 3.06e-5, 3.06e-5};
+  auto run = [&](double content_flux) {
+    for_each_cell_serial(g.patches[0].cells(), [&](int i, int j, int k) {
+      psi[0](i, j, k) = psi_of[i];
+      mass[0](i, j, k) = i == 2 ? 2.1249e-21 : 4.8e-19;
+    });
+    halo.exchange(psi);
+    halo.exchange(mass);
+    mflux.x.fill(0.0);
+    pflux.x.fill(0.0);
+    mflux.y.fill(0.0);
+    pflux.y.fill(0.0);
+    mflux.z.fill(0.0);
+    pflux.z.fill(0.0);
+    // The face between cells 1 and 2 (face index 2), flow towards cell 1: donor 2.
+    mflux.x[0](2, 0, 0) = -1.168e-21;
+    pflux.x[0](2, 0, 0) = -content_flux;
+    flag_out_of_range_donors(g, psi, mass, mflux, pflux, flag);
+    return flag[0](2, 0, 0);
+  };
+  // The slab value 4.34e-3: RQ = 2.1249e-21 x 2.1891e-3 - 5.070e-24 = -4.2e-25 < 0.
+  EXPECT_EQ(run(5.070e-24), 1.0);
+  // Within the range: the donor's own value (first order), RQ = v_D RM exactly: not flagged.
+  EXPECT_EQ(run(1.168e-21 * 2.1891e-3), 0.0);
+  // The cookoff's margin: RQ = -1.2e-25 (its r-face weight 0.941 on 5.070e-24), the former allowance 1.8e-25.
+  EXPECT_EQ(run(2.1249e-21 * 2.1891e-3 + 1.2e-25), 1.0);
+}
+
 }  // namespace
 }  // namespace tephra
