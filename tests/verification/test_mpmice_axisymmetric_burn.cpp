@@ -414,6 +414,51 @@ void detonation_step_one(const std::string& type) {
   EXPECT_NEAR(lost, burned, storage_roundoff(m0, *r.c) + 1e-12 * burned);
 }
 
+// DDT1 with <useInductionTime> per radian (session 27). The mantle cells
+// are ignited surface cells from step 1 (the steel at 300 K > IgnitionTemp,
+// theta_s > 0.2 in its own cell, so A = IC), p = p_ref while nothing burns:
+// the induction time is tau = dx_mean IC / S_f, S_f = PreexpoConst (p /
+// PressureShift)^1, dx_mean = (dx + dy + dz)/3 = 0.05 m here. With tau = 2.5
+// dt (dt = 1e-6 s) steps 1-2 burn nothing and step 3 burns the conductive
+// branch's per-radian mass of step 1, dt m_WSB R L (Ddt1ConductiveBranch...
+// above, the state unchanged while the cells warm up); the particles lose it.
+// What is per radian here is the burned mass (area R dy per radian); the
+// induction time itself has no volume or area in it.
+TEST(MpmIceAxisymmetricBurn, Ddt1InductionDelaysTheConductiveBranchPerRadian) {
+  set_thread_count(1);
+  const double dt = 1e-6, IC = 1.0, dx_mean = 0.05, tau = 2.5 * dt;
+  char fb[64];
+  std::snprintf(fb, sizeof fb, "%.17g", dx_mean * IC / tau);
+  CoupledRun r = test::make_coupled_run(test::source_dir() + "/inputs/mpmice/burning_cylinder_axisym.ups", [&](DeckNode& root) {
+    make_ddt(root, "DDT1", "5.3e9", "2.33e-6");
+    DeckNode& m = test::deck_node(root, {"Models", "Model"});
+    for (const DeckNode& n : {leaf("useInductionTime", "true"), leaf("IgnitionConst", "1"), leaf("PressureShift", "101325"),
+                              leaf("PreexpoConst", fb), leaf("ExponentialConst", "1")})
+      m.children.push_back(n);
+  });
+  const Grid& g = r.c->ice().grid();
+  ASSERT_NEAR((g.dx[0] + g.dx[1] + g.dx[2]) / 3, dx_mean, 1e-15);
+  double mp0 = 0;
+  for (double m : r.c->mpm().materials()[0].particles.mass) mp0 += m;
+  for (int k = 1; k <= 2; ++k) {
+    r.c->advance((k - 1) * dt, dt, k);
+    EXPECT_EQ(burn_model(r).mass_burned_last_step(), 0.0) << "step " << k;
+  }
+  r.c->advance(2 * dt, dt, 3);
+  WsbParams w;
+  w.R = 8.314, w.Ac = 1.637e15, w.Ec = 1.76e5, w.Bg = 1.6e-3, w.Qc = 4.0e5, w.Qg = 3.018e6;
+  w.kg = 0.07, w.kc = 0.2, w.Cp = 1.4e3, w.W = 0.0342;
+  const double closed = dt * kR * kL * wsb_burn_rate(w, kPref, 300.0, 1.0 / 8900.0).mass_flux;
+  const double burned = burn_model(r).mass_burned_last_step();
+  double mp = 0;
+  for (double m : r.c->mpm().materials()[0].particles.mass) mp += m;
+  std::printf("[mpmice axisym burn] DDT1 induction (tau = 2.5 dt): steps 1-2 burn 0, step 3 %.17g kg/rad, "
+              "closed form dt m R L %.17g (rel %.2e), particles lost %.17g\n",
+              burned, closed, burned / closed - 1, mp0 - mp);
+  EXPECT_NEAR(burned, closed, 1e-6 * closed);
+  EXPECT_NEAR(mp0 - mp, burned, 1e-13 * mp0);
+}
+
 TEST(MpmIceAxisymmetricBurn, Ddt1DetonationCapIsPerRadian) { detonation_step_one("DDT1"); }
 TEST(MpmIceAxisymmetricBurn, Ddt0DetonationCapIsPerRadian) { detonation_step_one("DDT0"); }
 
