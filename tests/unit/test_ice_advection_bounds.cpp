@@ -44,6 +44,16 @@ Grid periodic_square(int n) {
   return make_grid(deck->root.require_child("Grid"));
 }
 
+// A periodic line of n cells along x in [0, 1], one cell across (of width 1/n).
+Grid periodic_line(int n) {
+  std::ostringstream x;
+  x << "<Uintah_specification><Grid><Level><Box label=\"1\"><lower>[0,0,0]</lower><upper>[1," << 1.0 / n << ","
+    << 1.0 / n << "]</upper><resolution>[" << n << ",1,1]</resolution><extraCells>[0,0,0]</extraCells>"
+    << "<patches>[1,1,1]</patches></Box><periodic>[1,1,1]</periodic></Level></Grid></Uintah_specification>";
+  auto deck = load_deck_from_string(x.str(), "line.ups", ".");
+  return make_grid(deck->root.require_child("Grid"));
+}
+
 struct TraceRun {
   double min_mass = 1e300, min_psi = 1e300, max_psi = -1e300, mass_drift = 0;
   int steps = 0;
@@ -128,12 +138,7 @@ TEST(IceAdvectionBounds, BoundedTraceKeepsPositiveMassAndTemperatureRange) {
 // A = (1e-8 + 0.5e-8)/2 = 0.75e-8. After limit_outflow its outflow is A.
 TEST(IceAdvectionBounds, LimitedDonorSendsHalfOfContentPlusFirstOrderOutflow) {
   set_thread_count(1);
-  std::ostringstream x;
-  x << "<Uintah_specification><Grid><Level><Box label=\"1\"><lower>[0,0,0]</lower><upper>[1,0.1,0.1]</upper>"
-    << "<resolution>[9,1,1]</resolution><extraCells>[0,0,0]</extraCells><patches>[1,1,1]</patches></Box>"
-    << "<periodic>[1,1,1]</periodic></Level></Grid></Uintah_specification>";
-  auto deck = load_deck_from_string(x.str(), "line.ups", ".");
-  const Grid g = make_grid(deck->root.require_child("Grid"));
+  const Grid g = periodic_line(9);
   LocalHaloExchange halo(g);
   CellScalars q(g, 2), limit(g, 2);
   FaceScalars u(g, 0), w(g, 0), flux(g, 0);
@@ -234,12 +239,7 @@ TEST(IceAdvectionBounds, NoDonorIsLimitedBelowTheInactiveOutflow) {
 // temporary): the third case fails.
 TEST(IceAdvectionBounds, RangeCheckAllowanceIsRelativeToTheComparedTerms) {
   set_thread_count(1);
-  std::ostringstream x;
-  x << "<Uintah_specification><Grid><Level><Box label=\"1\"><lower>[0,0,0]</lower><upper>[1,0.2,0.2]</upper>"
-    << "<resolution>[5,1,1]</resolution><extraCells>[0,0,0]</extraCells><patches>[1,1,1]</patches></Box>"
-    << "<periodic>[1,1,1]</periodic></Level></Grid></Uintah_specification>";
-  auto deck = load_deck_from_string(x.str(), "line.ups", ".");
-  const Grid g = make_grid(deck->root.require_child("Grid"));
+  const Grid g = periodic_line(5);
   LocalHaloExchange halo(g);
   CellScalars mass(g, 2), psi(g, 2), flag(g, 2);
   FaceScalars mflux(g, 0), pflux(g, 0);
